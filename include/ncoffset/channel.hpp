@@ -1,0 +1,67 @@
+// A SINUMERIK channel: runs init files and a part program and emits the path (the library's
+// main entry point). Streaming: memory is bounded by the limits below, not by program length.
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "ncoffset/alarm.hpp"
+#include "ncoffset/path.hpp"
+
+namespace ncoffset {
+
+// Explicit resource limits (docs/limits.md). Exceeding one ends the run with an alarm.
+struct Limits {
+  size_t max_line_length = 65536;        // characters in one block
+  long long max_blocks = 100000000;      // executed blocks (endless-loop guard)
+  int max_expression_depth = 64;         // operator / parenthesis nesting in one expression
+  int max_program_levels = 16;           // main program + 15 subprogram levels (PM-NC p493)
+  int max_control_depth = 16;            // nested control structures per program level
+  size_t max_variables = 10000;          // user variables (DEF) alive at once
+  size_t max_array_elements = 1000000;   // elements of one array
+};
+
+enum class CoordSystem { MCS, WCS };
+
+struct RunOptions {
+  CoordSystem coords = CoordSystem::MCS;
+  Limits limits;
+};
+
+// How a run ended.
+struct RunResult {
+  enum class Status { Ok, FileError, Alarm } status = Status::Ok;
+  std::optional<Alarm> alarm;  // when status == Alarm
+  std::string file_error;      // when status == FileError
+};
+
+class Channel {
+ public:
+  explicit Channel(RunOptions options = {});
+  ~Channel();
+  Channel(const Channel&) = delete;
+  Channel& operator=(const Channel&) = delete;
+
+  // Runs an init file (TO_INI, setting data, frames: NC syntax, ends with M17 or at its end).
+  RunResult runInit(const std::filesystem::path& file, PathSink& sink);
+  // Runs the part program. Subprograms are searched beside it.
+  RunResult runProgram(const std::filesystem::path& file, PathSink& sink);
+  // Runs program text held in memory (tests, fuzzing); `dir` is where subprograms are searched.
+  RunResult runText(const std::string& name, const std::string& text, PathSink& sink,
+                    const std::filesystem::path& dir = {});
+
+  // The file name of a Segment::file index.
+  const std::string& fileName(int index) const;
+  // R parameters that were written and the main program's user variables, as JSON (the
+  // `--vars` contract of design.md).
+  void writeVariablesJson(std::ostream& out) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ncoffset

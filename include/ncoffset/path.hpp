@@ -1,0 +1,39 @@
+// The compensated path: what ncoffset emits where the control's interpolator would start.
+#pragma once
+
+#include <string>
+
+#include "ncoffset/alarm.hpp"
+#include "ncoffset/geometry.hpp"
+
+namespace ncoffset {
+
+enum class Motion { G0, G1, G2, G3 };
+const char* motionName(Motion m);
+
+// One output segment. Points are in the coordinate system chosen by the run (MCS or WCS).
+struct Segment {
+  int line = 0;          // 1-based source line of the block that produced it
+  int file = 0;          // index into the run's file table (0 = main program)
+  Motion motion = Motion::G1;
+  Vec3 start;            // where the segment starts
+  Vec3 end;              // where it ends
+  Vec3 centre;           // arcs: absolute centre, lying in the plane of the start point
+  Vec3 normal{0, 0, 1};  // arcs: unit normal; motion G2/G3 is the sense viewed from +normal
+  int turns = 0;         // arcs: additional full turns (TURN=)
+  double feed = 0;       // mm/min (G94) or mm/rev (G95) as programmed; 0 for G0
+  bool has_feed = false;
+};
+
+// Receives the path as it is produced, block by block (streaming).
+class PathSink {
+ public:
+  virtual ~PathSink() = default;
+  virtual void segment(const Segment& s) = 0;
+  // A message from MSG("...").
+  virtual void message(const SourceLoc&, const std::string&) {}
+  // The run ended: normally (alarm == nullptr) or by an alarm.
+  virtual void finish(const Alarm* alarm) = 0;
+};
+
+}  // namespace ncoffset

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs ncoffset on the shipped example.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build
+mkdir -p out
+./build/ncoffset --init examples/frames.INI -o out/frames.csv examples/frames.MPF
+echo "wrote out/frames.csv:"
+cat out/frames.csv

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages ncoffset builds and tests with (only those that are missing).
+set -euo pipefail
+packages=(cmake ninja-build g++ clang-14 libclang-rt-14-dev libfmt-dev libcli11-dev libgtest-dev
+          libgmock-dev libbenchmark-dev python3)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi

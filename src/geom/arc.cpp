@@ -1,0 +1,87 @@
+#include "geom/arc.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::geom {
+namespace {
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+double dist(Vec2 p, Vec2 q) { return std::hypot(q.a - p.a, q.o - p.o); }
+}  // namespace
+
+ArcSolution solveArc(const ArcRequest& r) {
+  const int defs = (r.centre ? 1 : 0) + (r.cr ? 1 : 0) + (r.ar ? 1 : 0);
+  if (defs == 0)
+    raise(alarm_no::kCircleProgramming,
+          "circle programming error: no centre (I, J, K), radius (CR=) or opening angle (AR=)");
+  if (r.cr && (r.centre || r.ar))
+    raise(alarm_no::kCircleProgramming,
+          "circle programming error: CR= cannot be combined with a centre or AR=");
+  if (r.ar && r.centre && r.end)
+    raise(alarm_no::kCircleProgramming,
+          "circle programming error: AR= with a centre needs no end point (over-determined)");
+
+  ArcSolution s;
+  if (r.centre) {
+    s.centre = *r.centre;
+    s.radius = dist(r.start, s.centre);
+    if (s.radius < 1e-9)
+      raise(alarm_no::kCircleProgramming, "circle programming error: start point is the centre");
+    if (r.ar) {
+      double ang = std::atan2(r.start.o - s.centre.o, r.start.a - s.centre.a) +
+                   (r.ccw ? 1 : -1) * *r.ar * kDeg;
+      s.end = {s.centre.a + s.radius * std::cos(ang), s.centre.o + s.radius * std::sin(ang)};
+      return s;
+    }
+    s.end = r.end ? *r.end : r.start;
+    double r2 = dist(s.end, s.centre);
+    double tol = std::fmax(r.tol_const, r.tol_factor * s.radius);
+    if (std::fabs(r2 - s.radius) > tol)
+      raise(alarm_no::kCircleEndPoint,
+            fmt::format("error in end point of circle: start radius {:.6g}, end radius {:.6g}, "
+                        "difference {:.6g} > {:.6g} (MD21000/MD21010)",
+                        s.radius, r2, std::fabs(r2 - s.radius), tol));
+    return s;
+  }
+  if (!r.end)
+    raise(alarm_no::kCircleProgramming, "circle programming error: end point missing");
+  s.end = *r.end;
+  double d = dist(r.start, s.end);
+  if (d < 1e-9)
+    raise(alarm_no::kCircleProgramming,
+          "circle programming error: a full circle needs its centre (I, J, K)");
+  Vec2 mid{(r.start.a + s.end.a) / 2, (r.start.o + s.end.o) / 2};
+  Vec2 u{(s.end.a - r.start.a) / d, (s.end.o - r.start.o) / d};
+  Vec2 left{-u.o, u.a};
+  double h;
+  if (r.cr) {
+    double rad = std::fabs(*r.cr);
+    if (rad < 1e-9) raise(alarm_no::kCircleProgramming, "circle programming error: CR=0");
+    double tol = std::fmax(r.tol_const, r.tol_factor * rad);
+    if (d > 2 * rad + tol)
+      raise(alarm_no::kCircleEndPoint,
+            fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
+                        d, 2 * rad));
+    h = std::sqrt(std::fmax(0.0, rad * rad - d * d / 4));
+    bool small = *r.cr > 0;  // CR>0: arc up to 180 degrees
+    double side = (r.ccw == small) ? 1 : -1;
+    s.centre = {mid.a + side * h * left.a, mid.o + side * h * left.o};
+    s.radius = rad;
+    return s;
+  }
+  double ar = *r.ar;
+  if (!(ar > 0 && ar < 360))
+    raise(alarm_no::kCircleProgramming,
+          "circle programming error: AR= with an end point must lie between 0 and 360 degrees");
+  double half = ar * kDeg / 2;
+  s.radius = d / (2 * std::sin(half));
+  h = s.radius * std::cos(half);  // negative beyond 180 degrees: centre on the other side
+  double side = r.ccw ? 1 : -1;
+  s.centre = {mid.a + side * h * left.a, mid.o + side * h * left.o};
+  return s;
+}
+
+}  // namespace ncoffset::geom

@@ -1,0 +1,80 @@
+// The public Channel: wires the interpreter and turns AlarmError into an Alarm value.
+#include "ncoffset/channel.hpp"
+
+#include <fmt/format.h>
+
+#include "interp/interpreter.hpp"
+
+namespace ncoffset {
+
+namespace {
+// Forwards to whichever sink the current run writes to.
+class SwitchSink final : public PathSink {
+ public:
+  PathSink* target = nullptr;
+  void segment(const Segment& s) override { target->segment(s); }
+  void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
+  void finish(const Alarm* a) override { target->finish(a); }
+};
+}  // namespace
+
+struct Channel::Impl {
+  explicit Impl(const RunOptions& o) : interp(o, sink) {}
+  SwitchSink sink;
+  interp::Interpreter interp;
+
+  RunResult run(std::shared_ptr<lang::SourceFile> src, PathSink& out, bool init, bool finish) {
+    sink.target = &out;
+    RunResult r;
+    try {
+      interp::LoadedProgram& prog = interp.load(std::move(src));
+      interp.run(prog, init);
+    } catch (const AlarmError& e) {
+      r.status = RunResult::Status::Alarm;
+      r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text()};
+    } catch (const std::bad_alloc&) {
+      r.status = RunResult::Status::Alarm;
+      r.alarm = Alarm{alarm_no::kArrayTooLarge, {}, "out of memory"};
+    }
+    if (finish || r.alarm) out.finish(r.alarm ? &*r.alarm : nullptr);
+    return r;
+  }
+};
+
+Channel::Channel(RunOptions options) : impl_(std::make_unique<Impl>(options)) {}
+Channel::~Channel() = default;
+
+static RunResult fileError(const std::filesystem::path& file, const std::string& why) {
+  RunResult r;
+  r.status = RunResult::Status::FileError;
+  r.file_error = fmt::format("{}: cannot read: {}", file.string(), why);
+  return r;
+}
+
+RunResult Channel::runInit(const std::filesystem::path& file, PathSink& sink) {
+  std::string err;
+  auto src = lang::SourceFile::load(file, &err);
+  if (!src) return fileError(file, err);
+  impl_->interp.setSearchDir(file.parent_path());
+  return impl_->run(std::move(src), sink, true, false);
+}
+
+RunResult Channel::runProgram(const std::filesystem::path& file, PathSink& sink) {
+  std::string err;
+  auto src = lang::SourceFile::load(file, &err);
+  if (!src) return fileError(file, err);
+  impl_->interp.setSearchDir(file.parent_path());
+  return impl_->run(std::move(src), sink, false, true);
+}
+
+RunResult Channel::runText(const std::string& name, const std::string& text, PathSink& sink,
+                           const std::filesystem::path& dir) {
+  impl_->interp.setSearchDir(dir);
+  return impl_->run(lang::SourceFile::fromString(name, text), sink, false, true);
+}
+
+const std::string& Channel::fileName(int index) const { return impl_->interp.fileName(index); }
+
+void Channel::writeVariablesJson(std::ostream& out) const { impl_->interp.writeVariablesJson(out); }
+
+}  // namespace ncoffset

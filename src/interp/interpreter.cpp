@@ -1,0 +1,612 @@
+// Program flow: block loop, control structures, jumps, subprogram calls, variables.
+#include "interp/interpreter.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::interp {
+
+using lang::Node;
+using lang::NodeKind;
+using lang::Stmt;
+using lang::StmtKind;
+using lang::TextPos;
+using lang::Value;
+
+Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
+    : options_(options),
+      placement_(sink, options.coords),
+      sink_(sink),
+      eval_(*this),
+      uifr_(100) {
+  r_.assign(static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM")), 0.0);
+  r_written_.assign(r_.size(), false);
+  updateActiveFrame();
+}
+
+Interpreter::~Interpreter() = default;
+
+LoadedProgram& Interpreter::load(std::shared_ptr<lang::SourceFile> source) {
+  auto p = std::make_unique<LoadedProgram>();
+  p->file_id = static_cast<int>(files_.size());
+  p->source = std::move(source);
+  files_.push_back(std::move(p));
+  LoadedProgram& prog = *files_.back();
+  try {
+    prog.index = std::make_unique<lang::ProgramIndex>(*prog.source, options_.limits.max_control_depth,
+                                                      options_.limits.max_line_length);
+  } catch (const AlarmError&) {
+    file_ = prog.file_id;  // the alarm belongs to this file
+    throw;
+  }
+  return prog;
+}
+
+SourceLoc Interpreter::alarmLoc(const AlarmError& e) const {
+  return {fileName(file_), e.line() ? e.line() : line_};
+}
+
+void Interpreter::run(LoadedProgram& program, bool init_file) {
+  init_file_ = init_file;
+  ended_ = false;
+  levels_.clear();
+  ProgramLevel main;
+  main.program = &program;
+  levels_.push_back(std::move(main));
+  std::string_view text;
+  const size_t max_len = options_.limits.max_line_length;
+  while (!ended_) {
+    ProgramLevel& lvl = levels_.back();
+    file_ = lvl.program->file_id;
+    line_pos_ = lvl.pos;
+    line_ = lvl.pos.line;
+    if (!lang::nextLine(lvl.program->source->text(), lvl.pos, text)) {
+      // End of file: a subprogram returns, the main program (or init file) ends.
+      if (levels_.size() > 1) {
+        returnFromSubprogram();
+        continue;
+      }
+      break;
+    }
+    if (++executed_ > options_.limits.max_blocks)
+      raise(alarm_no::kBlockLimit,
+            fmt::format("limit of {} executed blocks reached (endless loop?); raise --max-blocks",
+                        options_.limits.max_blocks));
+    if (text.size() > max_len)
+      raise(alarm_no::kLineTooLong,
+            fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",
+                        text.size(), max_len));
+    if (!text.empty() && text.front() == '%') continue;  // archive header %_N_NAME_MPF
+    lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
+    executeBlock();
+  }
+  if (!init_file) main_vars_ = std::move(levels_.front().locals);
+  levels_.clear();
+}
+
+void Interpreter::executeBlock() {
+  const lang::Block& b = block_;
+  if (b.stmts.empty() && b.decls.empty()) return;  // empty, comment or label-only line
+  words_.clear();
+  ProgramLevel& lvl = levels_.back();
+  bool jumped = false;
+  for (size_t i = 0; i < b.stmts.size() && !jumped; ++i) {
+    const Stmt& st = b.stmts[i];
+    if (st.kind != StmtKind::Keyword || st.name != "DEF") {
+      if (st.kind != StmtKind::Keyword || st.name != "PROC") lvl.defs_allowed = false;
+    }
+    switch (st.kind) {
+      case StmtKind::Word: collectWord(st); break;
+      case StmtKind::Assign: assign(st); break;
+      case StmtKind::Call: namedWord(st); break;
+      case StmtKind::ProcCall: {
+        std::vector<Value> args;
+        eval_.evalArgs(b, b.node(st.expr), args);
+        call(st.name, args);
+        break;
+      }
+      case StmtKind::Keyword: executeControl(st, i, jumped); if (st.name == "CASE") i = b.stmts.size(); break;
+      case StmtKind::CaseArm: break;
+    }
+  }
+  if (!jumped) finishBlock();
+}
+
+const lang::ControlLink& Interpreter::link() const {
+  const lang::ControlLink* l = levels_.back().program->index->link(line_pos_.offset);
+  if (!l)
+    raise(alarm_no::kControlNesting,
+          "invalid nesting of control structures: statement must stand at the start of its block");
+  return *l;
+}
+
+void Interpreter::continueAfter(const TextPos& line) {
+  ProgramLevel& lvl = levels_.back();
+  lvl.pos = line;
+  std::string_view skip;
+  lang::nextLine(lvl.program->source->text(), lvl.pos, skip);
+}
+
+void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
+  const lang::Block& b = block_;
+  ProgramLevel& lvl = levels_.back();
+  std::string_view kw = st.name;
+  if (kw == "DEF") {
+    if (!lvl.defs_allowed)
+      raise(alarm_no::kIllegalDef,
+            "illegal DEF instruction: definitions must stand before the first statement of the program");
+    for (const auto& d : b.decls) define(d);
+    return;
+  }
+  if (kw == "PROC") {
+    if (st.ext > 0)
+      raise(alarm_no::kNotModelled,
+            "PROC with formal parameters is not modelled by ncoffset (subprograms without parameters only)");
+    return;
+  }
+  if (st.jump) {  // GOTOF / GOTOB / GOTO / GOTOC
+    jump(st, st.jump == 4);
+    jumped = true;
+    return;
+  }
+  if (kw == "IF") {
+    bool cond = lang::toBool(eval_.eval(b, st.expr));
+    if (index + 1 < b.stmts.size() && b.stmts[index + 1].jump) {
+      // IF <condition> GOTOx <target>: a conditional jump.
+      if (cond) {
+        jump(b.stmts[index + 1], b.stmts[index + 1].jump == 4);
+        jumped = true;
+      } else {
+        jumped = true;  // the rest of the block is the jump: nothing else to do
+        finishBlock();
+      }
+      return;
+    }
+    if (index != 0) raise(alarm_no::kControlNesting, "IF must stand at the start of its block");
+    const auto& l = link();
+    if (!cond) {
+      continueAfter(l.partner);  // after ELSE, or after ENDIF
+      jumped = true;
+    }
+    return;
+  }
+  if (kw == "ELSE") {
+    continueAfter(link().partner);  // the true branch ran: skip to after ENDIF
+    jumped = true;
+    return;
+  }
+  if (kw == "ENDIF" || kw == "REPEAT" || kw == "LOOP") {
+    link();
+    return;
+  }
+  if (kw == "WHILE") {
+    const auto& l = link();
+    if (!lang::toBool(eval_.eval(b, st.expr))) {
+      continueAfter(l.partner);
+      jumped = true;
+    }
+    return;
+  }
+  if (kw == "ENDWHILE") {
+    lvl.pos = link().partner;  // back to the WHILE: its condition is evaluated again
+    jumped = true;
+    return;
+  }
+  if (kw == "FOR") {
+    const auto& l = link();
+    const Node& target = b.node(st.target);
+    Value counter;
+    if (for_continue_ == line_pos_.offset) {
+      for_continue_ = static_cast<size_t>(-1);
+      Value now = target.kind == NodeKind::RParam ? readR(target.number) : eval_.eval(b, st.target);
+      counter = Value::real(lang::toNumber(now) + 1);
+    } else {
+      counter = eval_.eval(b, st.expr);
+    }
+    store(target, counter);
+    double end = lang::toNumber(eval_.eval(b, st.expr2), "FOR end value");
+    Value now = target.kind == NodeKind::RParam ? readR(target.number) : eval_.eval(b, st.target);
+    if (lang::toNumber(now) > end && !lang::realEqual(lang::toNumber(now), end)) {
+      continueAfter(l.partner);
+      jumped = true;
+    }
+    return;
+  }
+  if (kw == "ENDFOR") {
+    const auto& l = link();
+    for_continue_ = l.partner.offset;
+    lvl.pos = l.partner;
+    jumped = true;
+    return;
+  }
+  if (kw == "UNTIL") {
+    const auto& l = link();
+    if (!lang::toBool(eval_.eval(b, st.expr))) {
+      continueAfter(l.partner);
+      jumped = true;
+    }
+    return;
+  }
+  if (kw == "ENDLOOP") {
+    continueAfter(link().partner);
+    jumped = true;
+    return;
+  }
+  if (kw == "CASE") {
+    Value sel = eval_.eval(b, st.expr);
+    for (size_t k = index + 1; k < b.stmts.size(); ++k) {
+      const Stmt& arm = b.stmts[k];
+      if (arm.kind != StmtKind::CaseArm) break;
+      bool hit = arm.expr < 0;
+      if (!hit) {
+        Value v = eval_.eval(b, arm.expr);
+        hit = (v.isText() || sel.isText()) ? lang::toText(v) == lang::toText(sel)
+                                           : lang::realEqual(lang::toNumber(v), lang::toNumber(sel));
+      }
+      if (hit) {
+        jump(arm, arm.jump == 4);
+        jumped = true;
+        return;
+      }
+    }
+    return;  // no arm and no DEFAULT: continue with the next block
+  }
+  raise(alarm_no::kSyntaxError, fmt::format("unexpected {}", kw));
+}
+
+void Interpreter::jump(const Stmt& st, bool quiet) {
+  // A jump ends the block: its other words are executed first.
+  finishBlock();
+  if (ended_) return;
+  jumpTo(st.jump, st.target, quiet);
+}
+
+void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
+  const Node& target = block_.node(target_node);
+  ProgramLevel& lvl = levels_.back();
+  LoadedProgram& prog = *lvl.program;
+  const size_t here = line_pos_.offset;
+  const bool forward = kind == 1 || kind == 3 || kind == 4;
+  const bool backward = kind == 2 || kind == 3 || kind == 4;
+  std::string label;
+  if (target.kind == NodeKind::BlockNo) {
+    long long n = static_cast<long long>(target.number);
+    auto it = prog.block_numbers.find(n);
+    if (it == prog.block_numbers.end()) {
+      // One scan of the file per distinct target number.
+      std::vector<TextPos> found;
+      TextPos p;
+      std::string_view text;
+      std::string norm;
+      while (true) {
+        TextPos at = p;
+        if (!lang::nextLine(prog.source->text(), p, text)) break;
+        if (!lang::normalizeLine(text.substr(0, 40), norm, nullptr)) continue;
+        size_t i = norm.find_first_not_of(' ');
+        if (i == std::string::npos) continue;
+        if (norm[i] == '/') {
+          ++i;
+          if (i < norm.size() && norm[i] >= '0' && norm[i] <= '9') ++i;
+          i = norm.find_first_not_of(' ', i);
+          if (i == std::string::npos) continue;
+        }
+        if ((norm[i] != 'N' && norm[i] != ':') || i + 1 >= norm.size()) continue;
+        size_t j = i + 1;
+        long long v = 0;
+        while (j < norm.size() && norm[j] >= '0' && norm[j] <= '9' && j - i < 19)
+          v = v * 10 + (norm[j++] - '0');
+        if (j > i + 1 && v == n) found.push_back(at);
+      }
+      it = prog.block_numbers.emplace(n, std::move(found)).first;
+    }
+    const TextPos* best = nullptr;
+    if (forward)
+      for (const auto& p : it->second)
+        if (p.offset > here) { best = &p; break; }
+    if (!best && backward)
+      for (auto r = it->second.rbegin(); r != it->second.rend(); ++r)
+        if (r->offset < here) { best = &*r; break; }
+    if (best) {
+      lvl.pos = *best;
+      return;
+    }
+    label = fmt::format("N{}", n);
+  } else {
+    if (target.kind == NodeKind::Name) {
+      // A label, or a STRING variable holding one.
+      UserVariable* v = findVariable(target.text);
+      label = v && !v->isArray() && v->type == lang::VarType::String ? v->data[0].str
+                                                                     : std::string(target.text);
+    } else {
+      label = lang::toText(eval_.eval(block_, target_node));
+    }
+    for (auto& c : label) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const TextPos* p = prog.index->label(label);
+    if (p && ((forward && p->offset > here) || (backward && p->offset < here) ||
+              (kind != 1 && kind != 2 && p->offset == here))) {
+      lvl.pos = *p;
+      return;
+    }
+  }
+  if (quiet) return;  // GOTOC: continue with the next block
+  raise(alarm_no::kJumpNotFound,
+        fmt::format("jump destination {} not found ({} search)", label,
+                    kind == 1 ? "forward" : kind == 2 ? "backward" : "forward and backward"));
+}
+
+void Interpreter::endProgram() { ended_ = true; }
+
+void Interpreter::returnFromSubprogram() {
+  ProgramLevel& lvl = levels_.back();
+  variable_count_ -= std::min(variable_count_, lvl.locals.size());
+  if (lvl.repeat_left > 0) {
+    --lvl.repeat_left;
+    lvl.locals.clear();
+    lvl.pos = TextPos{};
+    lvl.defs_allowed = true;
+    return;
+  }
+  levels_.pop_back();
+}
+
+void Interpreter::callSubprogram(std::string_view name, long long repeat) {
+  if (static_cast<int>(levels_.size()) >= options_.limits.max_program_levels)
+    raise(alarm_no::kSubprogramDepth,
+          fmt::format("maximum subprogram level exceeded: {} program levels (--max-program-levels)",
+                      options_.limits.max_program_levels));
+  if (repeat < 1 || repeat > 9999)
+    raise(alarm_no::kValueRange, fmt::format("value range exceeded: P{} (pass count 1..9999)", repeat));
+  std::string key(name);
+  LoadedProgram* prog = nullptr;
+  if (auto it = by_name_.find(key); it != by_name_.end()) {
+    prog = it->second;
+  } else {
+    if (!dir_scanned_) {
+      dir_scanned_ = true;
+      std::error_code ec;
+      std::filesystem::path dir = search_dir_.empty() ? std::filesystem::path(".") : search_dir_;
+      for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+        std::string fn = e.path().filename().string();
+        for (auto& c : fn) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        dir_entries_.emplace(fn, e.path());
+      }
+    }
+    const std::string candidates[] = {key + ".SPF", "_N_" + key + "_SPF", key + ".MPF",
+                                      "_N_" + key + "_MPF", key};
+    for (const auto& c : candidates) {
+      auto it = dir_entries_.find(c);
+      if (it == dir_entries_.end()) continue;
+      std::string err;
+      auto src = lang::SourceFile::load(it->second, &err);
+      if (!src) continue;
+      int saved_file = file_;
+      prog = &load(std::move(src));
+      file_ = saved_file;
+      break;
+    }
+    if (!prog)
+      raise(alarm_no::kProgramNotFound,
+            fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
+                        key, key, key));
+    by_name_.emplace(key, prog);
+  }
+  ProgramLevel lvl;
+  lvl.program = prog;
+  lvl.repeat_left = repeat - 1;
+  levels_.push_back(std::move(lvl));
+}
+
+// --- variables ------------------------------------------------------------------------------
+
+UserVariable* Interpreter::findVariable(std::string_view name) {
+  auto& loc = levels_.empty() ? main_vars_ : levels_.back().locals;
+  if (auto it = loc.find(name); it != loc.end()) return &it->second;
+  if (auto it = globals_.find(name); it != globals_.end()) return &it->second;
+  return nullptr;
+}
+
+void Interpreter::define(const lang::Decl& d) {
+  ProgramLevel& lvl = levels_.back();
+  std::string name(d.name);
+  if (lvl.locals.count(name) || globals_.count(name))
+    raise(alarm_no::kAlreadyDefined, fmt::format("name {} defined several times", name));
+  if (name[0] == '$' || (name.size() >= 2 && name[0] == 'R' &&
+                         std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })))
+    raise(alarm_no::kSyntaxError, fmt::format("{} is a reserved name", name));
+  if (variable_count_ >= options_.limits.max_variables)
+    raise(alarm_no::kTooManyVariables,
+          fmt::format("more than {} user variables (--max-variables)", options_.limits.max_variables));
+  UserVariable v;
+  v.type = d.type;
+  v.dims[0] = d.dims[0];
+  v.dims[1] = d.dims[1];
+  v.string_length = d.string_length;
+  size_t count = 1;
+  if (d.dims[0] > 0) {
+    count = static_cast<size_t>(d.dims[0]) * static_cast<size_t>(d.dims[1] > 0 ? d.dims[1] : 1);
+    if (count > options_.limits.max_array_elements)
+      raise(alarm_no::kArrayTooLarge,
+            fmt::format("array {} has {} elements, more than the limit of {} (--max-array-elements)",
+                        name, count, options_.limits.max_array_elements));
+  }
+  v.data.assign(count, initialValue(d.type));
+  if (d.init >= 0) {
+    v.data[0] = convertForStore(eval_.eval(block_, d.init), d.type, d.string_length, name);
+  } else if (d.init_first >= 0) {
+    if (static_cast<size_t>(d.init_count) > count && !d.init_rep)
+      raise(alarm_no::kArrayIndex1, fmt::format("illegal array index: {} values for {} elements of {}",
+                                                d.init_count, count, name));
+    if (d.init_rep) {
+      if (d.init_count != 1) raise(alarm_no::kWrongCallParams, "REP takes one value");
+      Value x = convertForStore(eval_.eval(block_, block_.args[static_cast<size_t>(d.init_first)]),
+                                d.type, d.string_length, name);
+      std::fill(v.data.begin(), v.data.end(), x);
+    } else {
+      for (int k = 0; k < d.init_count; ++k)
+        v.data[static_cast<size_t>(k)] = convertForStore(
+            eval_.eval(block_, block_.args[static_cast<size_t>(d.init_first + k)]), d.type,
+            d.string_length, name);
+    }
+  }
+  lvl.locals.emplace(std::move(name), std::move(v));
+  ++variable_count_;
+}
+
+size_t Interpreter::elementIndex(const UserVariable& var, std::span<const Value> idx,
+                                 std::string_view name) const {
+  int dims = var.dims[1] > 0 ? 2 : 1;
+  if (static_cast<int>(idx.size()) != dims)
+    raise(alarm_no::kArrayIndex1,
+          fmt::format("illegal array index: {} has {} dimension(s), {} index(es) given", name, dims,
+                      idx.size()));
+  size_t flat = 0;
+  for (int k = 0; k < dims; ++k) {
+    double x = lang::toNumber(idx[static_cast<size_t>(k)], "array index");
+    if (x != std::floor(x) || x < 0 || x >= var.dims[k])
+      raise(k == 0 ? alarm_no::kArrayIndex1 : alarm_no::kArrayIndex2,
+            fmt::format("illegal array index {}: {}[{}] with {} outside 0..{}", k + 1, name,
+                        k == 0 ? "i" : "..,j", x, var.dims[k] - 1));
+    flat = flat * static_cast<size_t>(k == 0 ? 1 : var.dims[1]) + static_cast<size_t>(x);
+  }
+  return flat;
+}
+
+bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool indexed, Value& out) {
+  if (UserVariable* v = findVariable(name)) {
+    if (v->isArray()) {
+      if (!indexed)
+        raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", name));
+      out = v->data[elementIndex(*v, idx, name)];
+    } else {
+      if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", name));
+      out = v->data[0];
+    }
+    return true;
+  }
+  return readSystem(name, idx, indexed, out);
+}
+
+Value Interpreter::readR(double number) {
+  if (number < 0 || number >= static_cast<double>(r_.size()) || number != std::floor(number))
+    raise(alarm_no::kArrayIndex1,
+          fmt::format("illegal array index: R{} (R0..R{} per MD28050)", number, r_.size() - 1));
+  return Value::real(r_[static_cast<size_t>(number)]);
+}
+
+void Interpreter::assign(const Stmt& st) {
+  Value v = eval_.eval(block_, st.expr);
+  store(block_.node(st.target), v);
+}
+
+void Interpreter::store(const Node& target, const Value& v) {
+  if (target.kind == NodeKind::RParam || target.kind == NodeKind::RIndex) {
+    double n = target.kind == NodeKind::RParam
+                   ? target.number
+                   : lang::roundToInt(eval_.number(block_, block_.arg(target, 0)));
+    readR(n);  // range check
+    if (!v.isNumeric())
+      raise(alarm_no::kTypeMismatch,
+            fmt::format("operation not compatible with data type: R{} takes a number, not {}", n,
+                        lang::typeName(v.type)));
+    r_[static_cast<size_t>(n)] = v.num;
+    r_written_[static_cast<size_t>(n)] = true;
+    return;
+  }
+  std::vector<Value> idx;
+  bool indexed = target.kind == NodeKind::Index;
+  if (indexed) eval_.evalArgs(block_, target, idx);
+  if (UserVariable* var = findVariable(target.text)) {
+    size_t at = 0;
+    if (var->isArray()) {
+      if (!indexed) raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", target.text));
+      at = elementIndex(*var, idx, target.text);
+    } else if (indexed) {
+      raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", target.text));
+    }
+    var->data[at] = convertForStore(v, var->type, var->string_length, target.text);
+    return;
+  }
+  writeSystem(target.text, idx, indexed, v);
+}
+
+// --- --vars ---------------------------------------------------------------------------------
+
+namespace {
+void jsonValue(std::ostream& out, const Value& v) {
+  switch (v.type) {
+    case lang::Type::Bool: out << (v.num != 0 ? "true" : "false"); break;
+    case lang::Type::Int:
+    case lang::Type::Char: out << fmt::format("{}", static_cast<long long>(v.num)); break;
+    case lang::Type::Real: out << fmt::format("{}", v.num); break;
+    case lang::Type::Frame: {
+      const Frame& f = *v.frame;
+      auto vec = [](Vec3 p) { return fmt::format("[{},{},{}]", p.x, p.y, p.z); };
+      out << "{\"trans\":" << vec(f.coarse) << ",\"fine\":" << vec(f.fine)
+          << ",\"rot\":" << vec(f.rotation) << ",\"scale\":" << vec(f.scale)
+          << fmt::format(",\"mirror\":[{},{},{}]}}", f.mirror[0], f.mirror[1], f.mirror[2]);
+      break;
+    }
+    default: {
+      out << '"';
+      for (char c : v.str) {
+        auto u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') out << '\\' << c;
+        else if (u < 0x20 || u >= 0x7f) out << fmt::format("\\u{:04x}", u);
+        else out << c;
+      }
+      out << '"';
+    }
+  }
+}
+
+void jsonVariable(std::ostream& out, const UserVariable& v) {
+  if (!v.isArray()) {
+    jsonValue(out, v.data[0]);
+    return;
+  }
+  size_t rows = static_cast<size_t>(v.dims[0]);
+  size_t cols = static_cast<size_t>(v.dims[1]);
+  out << '[';
+  for (size_t i = 0; i < rows; ++i) {
+    if (i) out << ',';
+    if (cols == 0) {
+      jsonValue(out, v.data[i]);
+      continue;
+    }
+    out << '[';
+    for (size_t j = 0; j < cols; ++j) {
+      if (j) out << ',';
+      jsonValue(out, v.data[i * cols + j]);
+    }
+    out << ']';
+  }
+  out << ']';
+}
+}  // namespace
+
+void Interpreter::writeVariablesJson(std::ostream& out) const {
+  out << "{\"R\": {";
+  bool first = true;
+  for (size_t i = 0; i < r_.size(); ++i) {
+    if (!r_written_[i]) continue;
+    out << (first ? "" : ", ") << '"' << i << "\": " << fmt::format("{}", r_[i]);
+    first = false;
+  }
+  out << '}';
+  std::map<std::string, const UserVariable*> sorted;
+  for (const auto& [k, v] : globals_) sorted[k] = &v;
+  const VariableMap& main = levels_.empty() ? main_vars_ : levels_.front().locals;
+  for (const auto& [k, v] : main) sorted[k] = &v;
+  for (const auto& [k, v] : sorted) {
+    out << ", \"" << k << "\": ";
+    jsonVariable(out, *v);
+  }
+  out << "}\n";
+}
+
+}  // namespace ncoffset::interp

@@ -1,0 +1,144 @@
+// The channel interpreter: executes blocks one at a time (streaming), keeps the modal state of
+// the G groups, variables, setting/machine data and frames, and hands each motion to the
+// placement stage. Program flow per PM-JP "Program flow control" and PM-NC "Subprograms".
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "interp/machine_data.hpp"
+#include "interp/modal_state.hpp"
+#include "interp/variables.hpp"
+#include "lang/block.hpp"
+#include "lang/evaluator.hpp"
+#include "lang/parser.hpp"
+#include "lang/program_index.hpp"
+#include "lang/source_file.hpp"
+#include "ncoffset/channel.hpp"
+#include "ncoffset/frame.hpp"
+#include "place/placement.hpp"
+
+namespace ncoffset::interp {
+
+struct LoadedProgram {
+  std::shared_ptr<lang::SourceFile> source;
+  std::unique_ptr<lang::ProgramIndex> index;
+  int file_id = 0;
+  // Positions of block numbers used as jump targets, found on demand (N number -> lines).
+  std::unordered_map<long long, std::vector<lang::TextPos>> block_numbers;
+};
+
+// One program level: the main program (level 0) or an active subprogram.
+struct ProgramLevel {
+  LoadedProgram* program = nullptr;
+  lang::TextPos pos;  // next line to read
+  VariableMap locals;
+  long long repeat_left = 0;
+  bool defs_allowed = true;
+};
+
+class Interpreter final : public lang::Environment {
+ public:
+  Interpreter(const RunOptions& options, PathSink& sink);
+  ~Interpreter() override;
+
+  // Runs a file as an init file or as the main program. Throws AlarmError; `alarmLoc()` then
+  // tells where.
+  void run(LoadedProgram& program, bool init_file);
+  LoadedProgram& load(std::shared_ptr<lang::SourceFile> source);
+  SourceLoc alarmLoc(const AlarmError& e) const;
+  const std::string& fileName(int id) const { return files_[static_cast<size_t>(id)]->source->name(); }
+  void writeVariablesJson(std::ostream& out) const;
+  void setSearchDir(std::filesystem::path dir) { search_dir_ = std::move(dir); }
+
+  // lang::Environment
+  bool read(std::string_view name, std::span<const lang::Value> indices, bool indexed,
+            lang::Value& out) override;
+  lang::Value readR(double number) override;
+  lang::Value call(std::string_view name, std::span<const lang::Value> args) override;
+  lang::Value chain(const lang::Value& a, const lang::Value& b) override;
+
+ private:
+  // --- program flow (interpreter.cpp) ---
+  void executeBlock();
+  void executeControl(const lang::Stmt& st, size_t index, bool& jumped);
+  void jump(const lang::Stmt& st, bool quiet);
+  void jumpTo(int kind, int target_node, bool quiet);
+  void continueAfter(const lang::TextPos& line);
+  void callSubprogram(std::string_view name, long long repeat);
+  void returnFromSubprogram();
+  void endProgram();
+  const lang::ControlLink& link() const;
+  void define(const lang::Decl& d);
+  void assign(const lang::Stmt& st);
+  void store(const lang::Node& target, const lang::Value& v);
+  UserVariable* findVariable(std::string_view name);
+  size_t elementIndex(const UserVariable& var, std::span<const lang::Value> idx,
+                      std::string_view name) const;
+
+  // --- words, modal state, motion (block_executor.cpp) ---
+  void collectWord(const lang::Stmt& st);
+  void namedWord(const lang::Stmt& st);
+  void gCode(int code, const lang::Stmt& st);
+  void finishBlock();
+  void doMotion();
+  void doFrameCommand();
+  Vec3 bcsOfWcs(Vec3 wcs) const;
+  double toMm(double v) const;
+
+  // --- system variables and frame functions (system_variables.cpp) ---
+  bool readSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                  lang::Value& out);
+  void writeSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                   const lang::Value& v);
+  Frame* frameByName(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                     bool for_write, bool& whole);
+  void updateActiveFrame();
+
+  RunOptions options_;
+  place::Placement placement_;
+  PathSink& sink_;
+  lang::Evaluator eval_;
+  MachineData data_;
+  ModalState modal_;
+  BlockWords words_;
+
+  std::vector<std::unique_ptr<LoadedProgram>> files_;
+  std::map<std::string, LoadedProgram*> by_name_;  // upper-case program name -> program
+  std::filesystem::path search_dir_;
+  std::map<std::string, std::filesystem::path> dir_entries_;  // upper-case file name -> path
+  bool dir_scanned_ = false;
+
+  std::vector<ProgramLevel> levels_;
+  VariableMap globals_;
+  VariableMap main_vars_;  // the main program's variables after it ended (for --vars)
+  size_t variable_count_ = 0;
+  std::vector<double> r_;
+  std::vector<bool> r_written_;
+
+  lang::Block block_;
+  lang::TextPos line_pos_;  // start of the executing line
+  int line_ = 0;
+  int file_ = 0;
+  long long executed_ = 0;
+  size_t for_continue_ = static_cast<size_t>(-1);
+  bool ended_ = false;
+  bool init_file_ = false;
+
+  // Frames (K2): settable frames $P_UIFR[0..99], the active settable frame, the programmable
+  // frame, and their product.
+  std::vector<Frame> uifr_;
+  Frame iframe_;
+  Frame pframe_;
+  Affine act_;
+
+  // Positions: last programmed WCS point, and the current BCS point of the tool tip.
+  Vec3 wcs_;
+  Vec3 bcs_;
+};
+
+}  // namespace ncoffset::interp

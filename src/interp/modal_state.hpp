@@ -1,0 +1,71 @@
+// Modal state of the channel (the G groups that matter for the path) and the words collected
+// from one block before it is executed.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "lang/block.hpp"
+#include "ncoffset/geometry.hpp"
+#include "ncoffset/path.hpp"
+
+namespace ncoffset::interp {
+
+enum class Units { G71, G70, G710, G700 };
+enum class Approach { Norm, Kont, KontC, KontT };          // group 17
+enum class CornerMode { TransitionCircle, Intersection };   // group 18: G450, G451
+enum class CollisionCheck { Cdof, Cdon, Cdof2 };            // group 23
+enum class FeedType { G93, G94, G95, G96, G97 };
+
+struct ModalState {
+  Motion motion = Motion::G0;        // group 1 (initial G0 per common machine data)
+  Plane plane = Plane::G17;          // group 6
+  bool incremental = false;          // group 14: G90 / G91
+  Units units = Units::G71;          // group 13
+  int trc = 40;                      // group 7: 40, 41, 42
+  CornerMode corner = CornerMode::TransitionCircle;
+  Approach approach = Approach::Norm;
+  CollisionCheck collision = CollisionCheck::Cdof;
+  int sar_side = 140;                // group 43: G140..G143
+  int sar_plane = 340;               // group 44: G340/G341
+  int trc_strategy = 460;            // group 48: G460..G462
+  int frame_select = 500;            // group 8: 500, 54..57, 505..599
+  FeedType feed_type = FeedType::G94;
+  int exact_stop = 64;               // group 10: G60/G64/G641..
+  double feed = 0;                   // F in mm/min (G94) as the control holds it
+  double disc = 0;                   // DISC=
+  double offn = 0;                   // OFFN=
+  int tool = 0;                      // T
+  int edge = 0;                      // D
+};
+
+// Words of one block, collected before execution (their order inside a block does not matter
+// for the G codes, PM-NC "Block structure").
+struct BlockWords {
+  bool axis[3] = {false, false, false};
+  double axis_value[3] = {0, 0, 0};
+  lang::AxisMode axis_mode[3] = {lang::AxisMode::Default, lang::AxisMode::Default,
+                                 lang::AxisMode::Default};
+  bool centre[3] = {false, false, false};
+  double centre_value[3] = {0, 0, 0};
+  lang::AxisMode centre_mode[3] = {lang::AxisMode::Default, lang::AxisMode::Default,
+                                   lang::AxisMode::Default};
+  std::optional<double> cr, ar, rpl;
+  std::optional<int> turn;
+  bool motion_word = false;   // G0..G3 in this block
+  bool dwell = false;         // G4
+  int suppress_frames = 0;    // 53, 153 or 1 (SUPA)
+  bool frame_select = false;  // G500/G54.. in this block
+  int axial_offset = 0;       // 58 / 59
+  std::string frame_command;  // TRANS, ATRANS, ROT, ...
+  std::optional<double> f;
+  bool end_program = false;   // M2 / M30
+  bool end_subprogram = false;  // M17 / RET
+  std::string call;           // subprogram to call at block end
+  std::optional<long long> repeat;  // P
+  int column = 0;
+
+  void clear() { *this = BlockWords(); }
+};
+
+}  // namespace ncoffset::interp

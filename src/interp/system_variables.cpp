@@ -1,0 +1,210 @@
+// System variables ($P_UIFR, $P_PFRAME, $P_IFRAME, $P_ACTFRAME, $P_UIFRNUM, $P_EP, machine and
+// setting data) and the predefined functions of the channel (CTRANS, CROT, ..., MSG, CHANDATA).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interp/interpreter.hpp"
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::interp {
+
+using lang::Type;
+using lang::Value;
+
+namespace {
+
+int axisOf(const Value& v) {
+  if (v.type == Type::Symbol || v.type == Type::Axis || v.type == Type::String) {
+    if (v.str == "X") return 0;
+    if (v.str == "Y") return 1;
+    if (v.str == "Z") return 2;
+    raise(alarm_no::kNotModelled,
+          fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)", v.str));
+  }
+  raise(alarm_no::kTypeMismatch, "an axis name (X, Y, Z) is expected");
+}
+
+Value frameValue(const Frame& f) { return {Type::Frame, 0, {}, std::make_shared<Frame>(f)}; }
+
+const Frame& asFrame(const Value& v, std::string_view what) {
+  if (v.type != Type::Frame || !v.frame)
+    raise(alarm_no::kTypeMismatch,
+          fmt::format("operation not compatible with data type: {} needs a FRAME", what));
+  return *v.frame;
+}
+
+double& component(Frame& f, std::string_view comp, int axis) {
+  if (comp == "TR") return f.coarse[axis];
+  if (comp == "FI") return f.fine[axis];
+  if (comp == "RT") return f.rotation[axis];
+  if (comp == "SC") return f.scale[axis];
+  raise(alarm_no::kNameNotDefined,
+        fmt::format("frame component {} not defined (TR, FI, RT, SC, MI)", comp));
+}
+
+}  // namespace
+
+Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> idx, bool indexed,
+                                bool for_write, bool& whole) {
+  (void)for_write;
+  whole = false;
+  if (name == "$P_UIFR") {
+    if (!indexed || (idx.size() != 1 && idx.size() != 3))
+      raise(alarm_no::kArrayIndex1, "$P_UIFR needs [n] or [n,axis,component]");
+    double n = lang::toNumber(idx[0], "frame number");
+    double count = data_.get("$MC_MM_NUM_USER_FRAMES");
+    if (n < 0 || n >= count || n != std::floor(n))
+      raise(alarm_no::kArrayIndex1,
+            fmt::format("illegal array index 1: $P_UIFR[{}] (0..{}, MD28080)", n, count - 1));
+    whole = idx.size() == 1;
+    return &uifr_[static_cast<size_t>(n)];
+  }
+  Frame* f = nullptr;
+  if (name == "$P_PFRAME") f = &pframe_;
+  else if (name == "$P_IFRAME") f = &iframe_;
+  else return nullptr;
+  if (indexed && idx.size() != 2)
+    raise(alarm_no::kArrayIndex1, fmt::format("{} needs no index or [axis,component]", name));
+  whole = !indexed;
+  return f;
+}
+
+bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, bool indexed,
+                             Value& out) {
+  if (int id = data_.find(name); id >= 0) {
+    if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
+    const DataSpec& s = data_.spec(id);
+    out = s.integer ? Value::integer(data_.get(id)) : Value::real(data_.get(id));
+    return true;
+  }
+  if (name.empty() || name[0] != '$') return false;
+  if (name == "$P_UIFRNUM") {
+    int f = modal_.frame_select;
+    out = Value::integer(f == 500 ? 0 : f < 100 ? f - 53 : f - 500);
+    return true;
+  }
+  if (name == "$P_ACTFRAME") {
+    Frame act = ncoffset::chain(iframe_, pframe_);
+    if (!indexed) {
+      out = frameValue(act);
+      return true;
+    }
+    if (idx.size() != 2) raise(alarm_no::kArrayIndex1, "$P_ACTFRAME needs [axis,component]");
+    int ax = axisOf(idx[0]);
+    std::string comp = lang::toText(idx[1]);
+    out = comp == "MI" ? Value::integer(act.mirror[static_cast<size_t>(ax)] ? 1 : 0)
+                       : Value::real(component(act, comp, ax));
+    return true;
+  }
+  if (name == "$P_EP") {
+    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, "$P_EP needs [axis]");
+    out = Value::real(wcs_[axisOf(idx[0])]);
+    return true;
+  }
+  bool whole;
+  Frame* f = frameByName(name, idx, indexed, false, whole);
+  if (!f) return false;
+  if (whole) {
+    out = frameValue(*f);
+    return true;
+  }
+  size_t base = idx.size() == 3 ? 1 : 0;
+  int ax = axisOf(idx[base]);
+  std::string comp = lang::toText(idx[base + 1]);
+  out = comp == "MI" ? Value::integer(f->mirror[static_cast<size_t>(ax)] ? 1 : 0)
+                     : Value::real(component(*f, comp, ax));
+  return true;
+}
+
+void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx, bool indexed,
+                              const Value& v) {
+  if (int id = data_.find(name); id >= 0) {
+    if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
+    data_.set(id, lang::toNumber(v, "machine/setting data"));
+    return;
+  }
+  if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
+    raise(alarm_no::kNameNotDefined, fmt::format("{} can only be read", name));
+  bool whole;
+  Frame* f = frameByName(name, idx, indexed, true, whole);
+  if (!f) {
+    if (!name.empty() && name[0] == '$')
+      raise(alarm_no::kNameNotDefined,
+            fmt::format("name {} not defined or option/function not available", name));
+    raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", name));
+  }
+  if (whole) {
+    *f = asFrame(v, name);
+  } else {
+    size_t base = idx.size() == 3 ? 1 : 0;
+    int ax = axisOf(idx[base]);
+    std::string comp = lang::toText(idx[base + 1]);
+    double x = lang::toNumber(v, "frame component");
+    if (comp == "MI") {
+      f->mirror[static_cast<size_t>(ax)] = x != 0;
+    } else {
+      if (comp == "SC" && std::fabs(x) < 1e-12)
+        raise(alarm_no::kValueRange, "value range exceeded: scale factor 0");
+      if (comp == "TR" || comp == "FI") x = toMm(x);
+      component(*f, comp, ax) = x;
+    }
+  }
+  // $P_UIFR takes effect at the next G500/G54..G599 (K2); $P_IFRAME and $P_PFRAME at once.
+  if (f != &pframe_ && f != &iframe_) return;
+  updateActiveFrame();
+}
+
+Value Interpreter::call(std::string_view name, std::span<const Value> args) {
+  if (name == "CTRANS" || name == "CFINE" || name == "CROT" || name == "CSCALE") {
+    if (args.size() % 2 != 0)
+      raise(alarm_no::kWrongCallParams,
+            fmt::format("wrong number of parameters in call of {}: axis/value pairs expected", name));
+    Frame f;
+    Vec3 angles;
+    for (size_t k = 0; k < args.size(); k += 2) {
+      int ax = axisOf(args[k]);
+      double x = lang::toNumber(args[k + 1], "frame value");
+      if (name == "CTRANS") f.coarse[ax] = toMm(x);
+      else if (name == "CFINE") f.fine[ax] = toMm(x);
+      else if (name == "CROT") angles[ax] = x;
+      else {
+        if (std::fabs(x) < 1e-12) raise(alarm_no::kValueRange, "value range exceeded: scale factor 0");
+        f.scale[ax] = x;
+      }
+    }
+    if (name == "CROT") f.rotation = rpyAngles(rpyMatrix(angles));
+    return frameValue(f);
+  }
+  if (name == "CMIRROR") {
+    Frame f;
+    for (const auto& a : args) f.addMirror(axisOf(a));
+    return frameValue(f);
+  }
+  if (name == "MSG") {
+    if (args.size() > 2) raise(alarm_no::kWrongCallParams, "MSG takes one text");
+    sink_.message({fileName(file_), line_}, args.empty() || args[0].type == Type::Empty
+                                                 ? std::string()
+                                                 : lang::toText(args[0]));
+    return Value::empty();
+  }
+  if (name == "CHANDATA") {
+    if (args.size() != 1) raise(alarm_no::kWrongCallParams, "CHANDATA takes a channel number");
+    double ch = lang::toNumber(args[0], "channel");
+    if (ch != 1)
+      raise(alarm_no::kNotModelled,
+            fmt::format("CHANDATA({}): ncoffset models one channel (CHANDATA(1))", ch));
+    return Value::empty();
+  }
+  if (name == "LENTOAX" || name == "GETTCOR" || name == "SETTCOR")
+    raise(alarm_no::kNotModelled,
+          fmt::format("{} is not modelled by ncoffset yet: it arrives with the tool-offset stage", name));
+  raise(alarm_no::kNameNotDefined,
+        fmt::format("name {} not defined or option/function not available", name));
+}
+
+Value Interpreter::chain(const Value& a, const Value& b) {
+  return frameValue(ncoffset::chain(asFrame(a, "':'"), asFrame(b, "':'")));
+}
+
+}  // namespace ncoffset::interp

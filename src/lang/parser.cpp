@@ -1,0 +1,865 @@
+#include "lang/parser.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::lang {
+namespace {
+
+bool isAlpha(char c) { return (c >= 'A' && c <= 'Z') || c == '_' || c == '$'; }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isIdentChar(char c) { return isAlpha(c) || isDigit(c); }
+
+// Keywords that open or continue statements with their own syntax.
+bool isControlKeyword(std::string_view w) {
+  static constexpr std::string_view kWords[] = {
+      "DEF", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "REPEAT", "UNTIL",
+      "LOOP", "ENDLOOP", "GOTOF", "GOTOB", "GOTO", "GOTOC", "CASE", "PROC"};
+  for (auto k : kWords)
+    if (k == w) return true;
+  return false;
+}
+
+int jumpKind(std::string_view w) {
+  if (w == "GOTOF") return 1;
+  if (w == "GOTOB") return 2;
+  if (w == "GOTO") return 3;
+  if (w == "GOTOC") return 4;
+  return 0;
+}
+
+class Parser {
+ public:
+  Parser(Block& b, const ParseLimits& limits) : b_(b), s_(b.buffer), limits_(limits) {}
+
+  void parse() {
+    skipSpaces();
+    if (peek() == '/') {
+      b_.skip = true;
+      ++i_;
+      if (isDigit(peek())) b_.skip_level = s_[i_++] - '0';
+      skipSpaces();
+    }
+    if ((peek() == 'N' && isDigit(peek(1))) || (peek() == ':' && isDigit(peek(1)))) {
+      ++i_;
+      b_.has_number = true;
+      b_.number = readInteger();
+      skipSpaces();
+    }
+    // Label: identifier directly followed by ':'.
+    if (isAlpha(peek())) {
+      size_t j = i_;
+      while (j < s_.size() && isIdentChar(s_[j])) ++j;
+      if (j < s_.size() && s_[j] == ':' && j - i_ >= 2) {
+        b_.label = std::string_view(s_).substr(i_, j - i_);
+        i_ = j + 1;
+      }
+    }
+    while (true) {
+      skipSpaces();
+      if (i_ >= s_.size()) break;
+      statement();
+    }
+  }
+
+ private:
+  Block& b_;
+  const std::string& s_;
+  const ParseLimits& limits_;
+  size_t i_ = 0;
+  int depth_ = 0;
+
+  char peek(size_t k = 0) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
+  void skipSpaces() {
+    while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
+  }
+  int column() const { return static_cast<int>(i_) + 1; }
+
+  [[noreturn]] void syntax(const std::string& what) const {
+    std::string near = s_.substr(i_ < s_.size() ? i_ : s_.size(), 24);
+    raise(alarm_no::kSyntaxError, "syntax error in text at column " + std::to_string(column()) +
+                                      (near.empty() ? std::string(" (end of block)")
+                                                    : " near '" + near + "'") +
+                                      ": " + what);
+  }
+
+  void expect(char c, const char* what) {
+    skipSpaces();
+    if (peek() != c) syntax(std::string("expected ") + what);
+    ++i_;
+  }
+
+  std::string_view ident() {
+    size_t j = i_;
+    while (j < s_.size() && isIdentChar(s_[j])) ++j;
+    std::string_view v = std::string_view(s_).substr(i_, j - i_);
+    i_ = j;
+    return v;
+  }
+
+  long long readInteger() {
+    long long v = 0;
+    int digits = 0;
+    while (isDigit(peek())) {
+      if (++digits > 18) syntax("number too long");
+      v = v * 10 + (s_[i_++] - '0');
+    }
+    return v;
+  }
+
+  int addNode(const Node& n) {
+    b_.nodes.push_back(n);
+    return static_cast<int>(b_.nodes.size()) - 1;
+  }
+
+  // Unsigned decimal literal with optional EX exponent (PM-NC: 1.5EX3 = 1500).
+  int number(bool negative) {
+    size_t start = i_;
+    bool is_int = true;
+    while (isDigit(peek())) ++i_;
+    if (peek() == '.') {
+      is_int = false;
+      ++i_;
+      while (isDigit(peek())) ++i_;
+    }
+    if (i_ == start || (i_ == start + 1 && s_[start] == '.')) syntax("number expected");
+    double v = 0;
+    auto res = std::from_chars(s_.data() + start, s_.data() + i_, v);
+    if (res.ec != std::errc()) syntax("number out of range");
+    if (peek() == 'E' && peek(1) == 'X') {
+      size_t save = i_;
+      i_ += 2;
+      bool neg = false;
+      if (peek() == '-' || peek() == '+') neg = s_[i_++] == '-';
+      if (!isDigit(peek())) {
+        i_ = save;
+      } else {
+        long long e = readInteger();
+        if (e > 400) e = 400;
+        v *= std::pow(10.0, static_cast<double>(neg ? -e : e));
+        is_int = false;
+      }
+    }
+    Node n;
+    n.kind = NodeKind::Number;
+    n.number = negative ? -v : v;
+    n.is_int = is_int;
+    return addNode(n);
+  }
+
+  // 'H1F' hexadecimal and 'B101' binary constants.
+  int quotedConstant() {
+    ++i_;  // '
+    char base = peek();
+    if (base != 'H' && base != 'B') syntax("'H..' or 'B..' constant expected");
+    ++i_;
+    size_t start = i_;
+    while (i_ < s_.size() && s_[i_] != '\'') ++i_;
+    if (i_ >= s_.size()) syntax("unterminated constant");
+    unsigned long long v = 0;
+    auto res = std::from_chars(s_.data() + start, s_.data() + i_, v, base == 'H' ? 16 : 2);
+    if (res.ec != std::errc() || res.ptr != s_.data() + i_) syntax("invalid constant");
+    ++i_;
+    Node n;
+    n.kind = NodeKind::Number;
+    n.number = static_cast<double>(v);
+    n.is_int = true;
+    return addNode(n);
+  }
+
+  int stringLiteral() {
+    ++i_;  // "
+    size_t start = i_;
+    while (i_ < s_.size() && s_[i_] != '"') ++i_;
+    if (i_ >= s_.size()) syntax("unterminated string");
+    Node n;
+    n.kind = NodeKind::String;
+    n.text = std::string_view(s_).substr(start, i_ - start);
+    ++i_;
+    return addNode(n);
+  }
+
+  // Argument list after '(' or '['; returns first index into args and count.
+  std::pair<int, int> argList(char close) {
+    std::vector<int> tmp;
+    skipSpaces();
+    if (peek() == close) {
+      ++i_;
+      return {static_cast<int>(b_.args.size()), 0};
+    }
+    while (true) {
+      skipSpaces();
+      if (peek() == ',' || peek() == close) {
+        // Empty argument (optional parameter left out).
+        Node n;
+        n.kind = NodeKind::Name;
+        tmp.push_back(addNode(n));
+      } else {
+        tmp.push_back(expression());
+      }
+      skipSpaces();
+      if (peek() == ',') {
+        ++i_;
+        continue;
+      }
+      if (peek() == close) {
+        ++i_;
+        break;
+      }
+      syntax(close == ')' ? "expected ',' or ')'" : "expected ',' or ']'");
+    }
+    int first = static_cast<int>(b_.args.size());
+    b_.args.insert(b_.args.end(), tmp.begin(), tmp.end());
+    return {first, static_cast<int>(tmp.size())};
+  }
+
+  int primary() {
+    skipSpaces();
+    char c = peek();
+    if (isDigit(c) || (c == '.' && isDigit(peek(1)))) return number(false);
+    if (c == '"') return stringLiteral();
+    if (c == '\'') return quotedConstant();
+    if (c == '(') {
+      ++i_;
+      int e = expression();
+      expect(')', "')'");
+      return e;
+    }
+    if (isAlpha(c)) {
+      std::string_view name = ident();
+      if (name == "TRUE" || name == "FALSE") {
+        Node n;
+        n.kind = NodeKind::Bool;
+        n.number = name == "TRUE" ? 1 : 0;
+        return addNode(n);
+      }
+      if (name.size() >= 2 && name[0] == 'R' && isDigitsOnly(name.substr(1))) {
+        Node n;
+        n.kind = NodeKind::RParam;
+        n.number = parseDigits(name.substr(1));
+        return addNode(n);
+      }
+      skipSpaces();
+      if (peek() == '(' || peek() == '[') {
+        char open = peek();
+        ++i_;
+        auto [first, count] = argList(open == '(' ? ')' : ']');
+        Node n;
+        n.kind = open == '(' ? NodeKind::Call : NodeKind::Index;
+        if (open == '[' && name == "R") n.kind = NodeKind::RIndex;
+        n.text = name;
+        n.a = first;
+        n.b = count;
+        return addNode(n);
+      }
+      Node n;
+      n.kind = NodeKind::Name;
+      n.text = name;
+      return addNode(n);
+    }
+    syntax("operand expected");
+  }
+
+  static bool isDigitsOnly(std::string_view v) {
+    if (v.empty()) return false;
+    for (char c : v)
+      if (!isDigit(c)) return false;
+    return true;
+  }
+  double parseDigits(std::string_view v) const {
+    if (v.size() > 9) syntax("R parameter number too large");
+    double r = 0;
+    for (char c : v) r = r * 10 + (c - '0');
+    return r;
+  }
+
+  int unary() {
+    skipSpaces();
+    char c = peek();
+    Op op = Op::None;
+    if (c == '-') {
+      op = Op::Neg;
+      ++i_;
+    } else if (c == '+') {
+      op = Op::Plus;
+      ++i_;
+    } else if (wordAhead("NOT")) {
+      op = Op::Not;
+      i_ += 3;
+    } else if (wordAhead("B_NOT")) {
+      op = Op::BNot;
+      i_ += 5;
+    }
+    if (op == Op::None) return primary();
+    enter();
+    int operand = unary();
+    leave();
+    Node n;
+    n.kind = NodeKind::Unary;
+    n.op = op;
+    n.a = operand;
+    return addNode(n);
+  }
+
+  bool wordAhead(std::string_view w) const {
+    if (s_.compare(i_, w.size(), w) != 0) return false;
+    size_t j = i_ + w.size();
+    return j >= s_.size() || !isIdentChar(s_[j]);
+  }
+
+  // Binary operator at the current position and its priority (PM-NC 12/2019 p444: higher binds
+  // tighter; comparisons bind weakest, then the frame chain ':').
+  bool binaryOp(Op& op, int& prio, size_t& len) const {
+    char c = peek(), d = peek(1);
+    len = 1;
+    switch (c) {
+      case '*': op = Op::Mul; prio = 10; return true;
+      case '/': op = Op::Div; prio = 10; return true;
+      case '+': op = Op::Add; prio = 9; return true;
+      case '-': op = Op::Sub; prio = 9; return true;
+      case '=':
+        if (d == '=') { op = Op::Eq; prio = 1; len = 2; return true; }
+        return false;
+      case '<':
+        if (d == '>') { op = Op::Ne; prio = 1; len = 2; return true; }
+        if (d == '=') { op = Op::Le; prio = 1; len = 2; return true; }
+        if (d == '<') { op = Op::Concat; prio = 2; len = 2; return true; }
+        op = Op::Lt; prio = 1; return true;
+      case '>':
+        if (d == '=') { op = Op::Ge; prio = 1; len = 2; return true; }
+        if (d == '<') { op = Op::Ne; prio = 1; len = 2; return true; }
+        op = Op::Gt; prio = 1; return true;
+      case ':': op = Op::Chain; prio = 0; return true;
+      default: break;
+    }
+    struct W { std::string_view w; Op op; int prio; };
+    static constexpr W kWords[] = {{"DIV", Op::IntDiv, 10}, {"MOD", Op::Mod, 10},
+                                   {"B_AND", Op::BAnd, 8},  {"B_XOR", Op::BXor, 7},
+                                   {"B_OR", Op::BOr, 6},    {"AND", Op::And, 5},
+                                   {"XOR", Op::Xor, 4},     {"OR", Op::Or, 3}};
+    if (!isAlpha(c)) return false;
+    for (const W& w : kWords) {
+      if (wordAhead(w.w)) {
+        op = w.op;
+        prio = w.prio;
+        len = w.w.size();
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void enter() {
+    if (++depth_ > limits_.max_expression_depth)
+      raise(alarm_no::kExpressionDepth,
+            "expression nested deeper than the limit of " +
+                std::to_string(limits_.max_expression_depth) + " (--max-expression-depth)");
+  }
+  void leave() { --depth_; }
+
+  int binary(int min_prio) {
+    enter();
+    int left = unary();
+    while (true) {
+      skipSpaces();
+      Op op;
+      int prio;
+      size_t len;
+      if (!binaryOp(op, prio, len) || prio < min_prio) break;
+      i_ += len;
+      int right = binary(prio + 1);
+      Node n;
+      n.kind = NodeKind::Binary;
+      n.op = op;
+      n.a = left;
+      n.b = right;
+      left = addNode(n);
+    }
+    leave();
+    return left;
+  }
+
+ public:
+  int expression() { return binary(0); }
+
+ private:
+  // --- statements ---------------------------------------------------------------------------
+
+  void statement() {
+    int col = column();
+    char c = peek();
+    if (!isAlpha(c)) {
+      if (c == '=' ) syntax("address or variable expected before '='");
+      syntax("address or name expected");
+    }
+    // Single-letter address followed by a plain number: X10, G1, M30, X-5.5, T1, D1, R1=..
+    char n1 = peek(1);
+    if (c != '$' && c != '_' &&
+        (isDigit(n1) || ((n1 == '.' || n1 == '-' || n1 == '+') &&
+                         (isDigit(peek(2)) || peek(2) == '.')))) {
+      numericAddress(col);
+      return;
+    }
+    std::string_view name = ident();
+    skipSpaces();
+    if (isControlKeyword(name)) {
+      controlStatement(name, col);
+      return;
+    }
+    if (peek() == '=' && peek(1) != '=') {
+      ++i_;
+      int value = expression();
+      if (isExtendedAddress(name)) {
+        addWord(name, -1, value, col, true);
+      } else {
+        Node t;
+        t.kind = NodeKind::Name;
+        t.text = name;
+        Stmt st;
+        st.kind = StmtKind::Assign;
+        st.name = name;
+        st.target = addNode(t);
+        st.expr = value;
+        st.column = col;
+        b_.stmts.push_back(st);
+      }
+      return;
+    }
+    if (peek() == '[') {
+      ++i_;
+      auto [first, count] = argList(']');
+      Node t;
+      t.kind = name == "R" ? NodeKind::RIndex : NodeKind::Index;
+      t.text = name;
+      t.a = first;
+      t.b = count;
+      int target = addNode(t);
+      skipSpaces();
+      if (peek() != '=' || peek(1) == '=') syntax("'=' expected after indexed variable");
+      ++i_;
+      Stmt st;
+      st.kind = StmtKind::Assign;
+      st.name = name;
+      st.target = target;
+      st.expr = expression();
+      st.column = col;
+      b_.stmts.push_back(st);
+      return;
+    }
+    if (peek() == '(') {
+      ++i_;
+      auto [first, count] = argList(')');
+      Node call;
+      call.kind = NodeKind::Call;
+      call.text = name;
+      call.a = first;
+      call.b = count;
+      Stmt st;
+      st.kind = StmtKind::ProcCall;
+      st.name = name;
+      st.expr = addNode(call);
+      st.column = col;
+      b_.stmts.push_back(st);
+      return;
+    }
+    Stmt st;
+    st.kind = StmtKind::Call;
+    st.name = name;
+    st.column = col;
+    b_.stmts.push_back(st);
+  }
+
+  static bool isExtendedAddress(std::string_view name) {
+    if (name.size() == 1) return name[0] != '$' && name[0] != '_';
+    static constexpr std::string_view kAddr[] = {
+        "CR",  "AR",    "TURN",  "DISR", "DISC", "OFFN", "DISCL", "DISRP", "FAD", "RPL",
+        "RND", "RNDM",  "CHF",   "CHR",  "SPOS", "SPOSA", "FRC",  "FRCM", "ANG", "AP",
+        "RP",  "DISPR", "I1",    "J1",   "K1",   "CT",   "SF",    "FA",   "POS", "POSA",
+        "ACC", "OVR",   "LIMS",  "MOVT", "PM",   "PR",   "STOLF", "DITS", "DITE", "SCC"};
+    for (auto a : kAddr)
+      if (a == name) return true;
+    return false;
+  }
+
+  void addWord(std::string_view address, int ext, int value, int col, bool equals) {
+    Stmt st;
+    st.kind = StmtKind::Word;
+    st.name = address;
+    st.ext = ext;
+    st.expr = value;
+    st.column = col;
+    st.has_equals = equals;
+    // X=AC(..) / X=IC(..): absolute or incremental dimension for this word only.
+    const Node& v = b_.node(value);
+    if (v.kind == NodeKind::Call && (v.text == "AC" || v.text == "IC")) {
+      if (v.b != 1) syntax("AC/IC take one value");
+      st.mode = v.text == "AC" ? AxisMode::AC : AxisMode::IC;
+      st.expr = b_.arg(v, 0);
+    }
+    b_.stmts.push_back(st);
+  }
+
+  void numericAddress(int col) {
+    std::string_view address = std::string_view(s_).substr(i_, 1);
+    ++i_;
+    // R parameter assignment R1=..
+    if (address == "R" && isDigit(peek())) {
+      size_t start = i_;
+      while (isDigit(peek())) ++i_;
+      std::string_view digits = std::string_view(s_).substr(start, i_ - start);
+      skipSpaces();
+      if (peek() != '=' || peek(1) == '=') syntax("'=' expected after R parameter");
+      ++i_;
+      Node t;
+      t.kind = NodeKind::RParam;
+      t.number = parseDigits(digits);
+      Stmt st;
+      st.kind = StmtKind::Assign;
+      st.name = "R";
+      st.target = addNode(t);
+      st.expr = expression();
+      st.column = col;
+      b_.stmts.push_back(st);
+      return;
+    }
+    // Address extension: M2=6, S1=1000, H2=5, T1=..? (spindle / extension number).
+    if ((address == "M" || address == "S" || address == "H" || address == "T" ||
+         address == "D" || address == "F") &&
+        isDigit(peek())) {
+      size_t save = i_;
+      long long ext = readInteger();
+      skipSpaces();
+      if (peek() == '=' && peek(1) != '=') {
+        ++i_;
+        if (ext > 99) syntax("address extension too large");
+        addWord(address, static_cast<int>(ext), expression(), col, true);
+        return;
+      }
+      i_ = save;
+    }
+    bool negative = false;
+    if (peek() == '-' || peek() == '+') negative = s_[i_++] == '-';
+    int value = number(negative);
+    addWord(address, -1, value, col, false);
+    // A letter may follow directly (G1X10Y20); anything else must be a separator.
+    if (isDigit(peek())) syntax("unexpected digit");
+  }
+
+  int jumpTarget() {
+    skipSpaces();
+    if ((peek() == 'N' && isDigit(peek(1))) || (peek() == ':' && isDigit(peek(1)))) {
+      ++i_;
+      Node n;
+      n.kind = NodeKind::BlockNo;
+      n.number = static_cast<double>(readInteger());
+      return addNode(n);
+    }
+    if (isDigit(peek())) {
+      Node n;
+      n.kind = NodeKind::BlockNo;
+      n.number = static_cast<double>(readInteger());
+      return addNode(n);
+    }
+    if (!isAlpha(peek()) && peek() != '"') syntax("jump destination expected");
+    return expression();
+  }
+
+  void controlStatement(std::string_view kw, int col) {
+    Stmt st;
+    st.kind = StmtKind::Keyword;
+    st.name = kw;
+    st.column = col;
+    if (kw == "DEF") {
+      definition(col);
+      return;
+    }
+    if (kw == "IF" || kw == "WHILE" || kw == "UNTIL") {
+      st.expr = expression();
+      b_.stmts.push_back(st);
+      return;
+    }
+    if (int j = jumpKind(kw)) {
+      st.jump = j;
+      st.target = jumpTarget();
+      b_.stmts.push_back(st);
+      return;
+    }
+    if (kw == "FOR") {
+      skipSpaces();
+      if (!isAlpha(peek())) syntax("loop variable expected after FOR");
+      int col2 = column();
+      (void)col2;
+      size_t save = i_;
+      std::string_view var = ident();
+      Node t;
+      if (var.size() >= 2 && var[0] == 'R' && isDigitsOnly(var.substr(1))) {
+        t.kind = NodeKind::RParam;
+        t.number = parseDigits(var.substr(1));
+      } else {
+        (void)save;
+        t.kind = NodeKind::Name;
+        t.text = var;
+      }
+      st.target = addNode(t);
+      expect('=', "'=' after the FOR variable");
+      st.expr = expression();
+      skipSpaces();
+      if (!wordAhead("TO")) syntax("TO expected in FOR");
+      i_ += 2;
+      st.expr2 = expression();
+      b_.stmts.push_back(st);
+      return;
+    }
+    if (kw == "CASE") {
+      expect('(', "'(' after CASE");
+      st.expr = expression();
+      expect(')', "')'");
+      skipSpaces();
+      if (!wordAhead("OF")) syntax("OF expected in CASE");
+      i_ += 2;
+      b_.stmts.push_back(st);
+      caseArms();
+      return;
+    }
+    if (kw == "PROC") {
+      skipSpaces();
+      if (!isAlpha(peek())) syntax("program name expected after PROC");
+      st.target = -1;
+      std::string_view name = ident();
+      Node n;
+      n.kind = NodeKind::Name;
+      n.text = name;
+      st.target = addNode(n);
+      skipSpaces();
+      if (peek() == '(') {
+        ++i_;
+        auto [first, count] = argList(')');
+        st.ext = count;
+        (void)first;
+      }
+      b_.stmts.push_back(st);
+      // Attributes such as SAVE or DISPLOF may follow; they are kept as calls.
+      return;
+    }
+    b_.stmts.push_back(st);  // ELSE, ENDIF, ENDWHILE, ENDFOR, REPEAT, LOOP, ENDLOOP
+  }
+
+  void caseArms() {
+    while (true) {
+      skipSpaces();
+      if (i_ >= s_.size()) return;
+      Stmt arm;
+      arm.kind = StmtKind::CaseArm;
+      arm.column = column();
+      if (wordAhead("DEFAULT")) {
+        i_ += 7;
+        arm.expr = -1;
+      } else {
+        arm.expr = unary();
+      }
+      skipSpaces();
+      if (!isAlpha(peek())) syntax("GOTOF/GOTOB expected in CASE");
+      std::string_view kw = ident();
+      arm.jump = jumpKind(kw);
+      if (!arm.jump) syntax("GOTOF/GOTOB expected in CASE");
+      arm.name = kw;
+      arm.target = jumpTarget();
+      b_.stmts.push_back(arm);
+    }
+  }
+
+  static bool typeOf(std::string_view w, VarType& t) {
+    if (w == "INT") t = VarType::Int;
+    else if (w == "REAL") t = VarType::Real;
+    else if (w == "BOOL") t = VarType::Bool;
+    else if (w == "STRING") t = VarType::String;
+    else if (w == "CHAR") t = VarType::Char;
+    else if (w == "AXIS") t = VarType::Axis;
+    else if (w == "FRAME") t = VarType::Frame;
+    else return false;
+    return true;
+  }
+
+  void definition(int col) {
+    skipSpaces();
+    std::string_view w = ident();
+    if (w == "NCK" || w == "CHAN") {  // global user data: same handling in one channel
+      skipSpaces();
+      w = ident();
+    }
+    VarType type;
+    if (!typeOf(w, type)) syntax("data type expected after DEF (INT, REAL, BOOL, STRING, CHAR, AXIS, FRAME)");
+    int string_length = 0;
+    skipSpaces();
+    if (type == VarType::String) {
+      if (peek() != '[') syntax("STRING needs a length: STRING[n]");
+      ++i_;
+      skipSpaces();
+      if (!isDigit(peek())) syntax("string length expected");
+      long long len = readInteger();
+      if (len < 1 || len > 200) syntax("string length must be 1..200");
+      string_length = static_cast<int>(len);
+      expect(']', "']'");
+    }
+    while (true) {
+      skipSpaces();
+      if (!isAlpha(peek())) syntax("variable name expected in DEF");
+      Decl d;
+      d.type = type;
+      d.string_length = string_length;
+      d.column = column();
+      d.name = ident();
+      skipSpaces();
+      if (peek() == '[') {
+        ++i_;
+        for (int k = 0; k < 3; ++k) {
+          skipSpaces();
+          if (!isDigit(peek())) syntax("array size must be a number");
+          long long n = readInteger();
+          if (k == 2) syntax("arrays have at most two dimensions");
+          if (n < 1 || n > 1000000000) syntax("array size out of range");
+          d.dims[k] = static_cast<int>(n);
+          skipSpaces();
+          if (peek() == ',') {
+            ++i_;
+            continue;
+          }
+          break;
+        }
+        expect(']', "']'");
+      }
+      skipSpaces();
+      if (peek() == '=' && peek(1) != '=') {
+        ++i_;
+        skipSpaces();
+        if (d.dims[0] > 0) {
+          bool rep = wordAhead("REP");
+          if (wordAhead("SET") || rep) {
+            i_ += 3;
+            expect('(', "'('");
+          } else if (peek() == '(') {
+            ++i_;
+          } else {
+            syntax("array initialisation needs SET(..), REP(..) or (..)");
+          }
+          auto [first, count] = argList(')');
+          d.init_first = first;
+          d.init_count = count;
+          d.init_rep = rep;
+        } else {
+          d.init = expression();
+        }
+      }
+      b_.decls.push_back(d);
+      skipSpaces();
+      if (peek() == ',') {
+        ++i_;
+        continue;
+      }
+      break;
+    }
+    skipSpaces();
+    if (i_ < s_.size()) syntax("unexpected text after DEF");
+    Stmt st;
+    st.kind = StmtKind::Keyword;
+    st.name = "DEF";
+    st.column = col;
+    b_.stmts.push_back(st);
+  }
+};
+
+}  // namespace
+
+bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
+  out.clear();
+  out.reserve(text.size());
+  bool in_string = false;
+  for (size_t k = 0; k < text.size(); ++k) {
+    unsigned char c = static_cast<unsigned char>(text[k]);
+    if (in_string) {
+      if (c == '"') in_string = false;
+      if (c == 0) {
+        if (bad_column) *bad_column = static_cast<int>(k) + 1;
+        return false;
+      }
+      out.push_back(static_cast<char>(c));
+      continue;
+    }
+    if (c == ';') break;
+    if (c == '"') in_string = true;
+    if (c == '\t' || c == '\r' || c == '\f' || c == '\v') c = ' ';
+    if (c < 32 || c > 126) {
+      if (bad_column) *bad_column = static_cast<int>(k) + 1;
+      return false;
+    }
+    if (c >= 'a' && c <= 'z') c = static_cast<unsigned char>(c - 'a' + 'A');
+    out.push_back(static_cast<char>(c));
+  }
+  return true;
+}
+
+void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& limits) {
+  out.clear();
+  out.line = line;
+  int bad = 0;
+  if (!normalizeLine(text, out.buffer, &bad)) {
+    unsigned char c = static_cast<unsigned char>(text[static_cast<size_t>(bad - 1)]);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", c);
+    raise(alarm_no::kBadCharacter, "character " + std::string(hex) + " at column " +
+                                       std::to_string(bad) +
+                                       " is not allowed outside comments and strings");
+  }
+  Parser p(out, limits);
+  p.parse();
+}
+
+LineHead scanLineHead(std::string_view s) {
+  LineHead h;
+  size_t i = 0;
+  auto spaces = [&] {
+    while (i < s.size() && s[i] == ' ') ++i;
+  };
+  spaces();
+  if (i < s.size() && s[i] == '/') {
+    ++i;
+    if (i < s.size() && isDigit(s[i])) ++i;
+    spaces();
+  }
+  if (i + 1 < s.size() && (s[i] == 'N' || s[i] == ':') && isDigit(s[i + 1])) {
+    ++i;
+    while (i < s.size() && isDigit(s[i])) ++i;
+    spaces();
+  }
+  size_t j = i;
+  while (j < s.size() && isIdentChar(s[j])) ++j;
+  if (j < s.size() && s[j] == ':' && j - i >= 2 && isAlpha(s[i])) {
+    h.label = s.substr(i, j - i);
+    i = j + 1;
+    spaces();
+    j = i;
+    while (j < s.size() && isIdentChar(s[j])) ++j;
+  }
+  if (i < s.size() && isAlpha(s[i])) h.keyword = s.substr(i, j - i);
+  if (h.keyword == "IF") {
+    // IF <cond> GOTOx <target> is a conditional jump, not a structure.
+    for (size_t k = j; k + 4 <= s.size(); ++k) {
+      if (s.compare(k, 4, "GOTO") == 0 && (k == 0 || !isIdentChar(s[k - 1]))) {
+        size_t e = k + 4;
+        if (e < s.size() && (s[e] == 'F' || s[e] == 'B' || s[e] == 'C')) ++e;
+        if (e >= s.size() || !isIdentChar(s[e])) {
+          h.has_goto = true;
+          break;
+        }
+      }
+    }
+  }
+  return h;
+}
+
+}  // namespace ncoffset::lang

@@ -1,0 +1,56 @@
+// A program or init file held in memory (memory-mapped when possible), read line by line.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace ncoffset::lang {
+
+class SourceFile {
+ public:
+  // Loads a file; returns nullptr and sets `error` when it cannot be read.
+  static std::shared_ptr<SourceFile> load(const std::filesystem::path& path, std::string* error);
+  static std::shared_ptr<SourceFile> fromString(std::string name, std::string text);
+  ~SourceFile();
+  SourceFile(const SourceFile&) = delete;
+  SourceFile& operator=(const SourceFile&) = delete;
+
+  std::string_view text() const { return text_; }
+  // The name used in alarms: the path as the user gave it.
+  const std::string& name() const { return name_; }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  SourceFile() = default;
+  std::string name_;
+  std::filesystem::path path_;
+  std::string owned_;
+  void* map_ = nullptr;
+  size_t map_size_ = 0;
+  std::string_view text_;
+};
+
+// A position in a file: byte offset of a line start and its 1-based line number.
+struct TextPos {
+  size_t offset = 0;
+  int line = 1;
+};
+
+// Reads the line at `pos` (without its CR/LF) and advances `pos` to the next line.
+// Returns false at the end of the text.
+inline bool nextLine(std::string_view text, TextPos& pos, std::string_view& line) {
+  if (pos.offset >= text.size()) return false;
+  const char* begin = text.data() + pos.offset;
+  size_t rest = text.size() - pos.offset;
+  const void* nl = std::char_traits<char>::find(begin, rest, '\n');
+  size_t len = nl ? static_cast<size_t>(static_cast<const char*>(nl) - begin) : rest;
+  pos.offset += len + (nl ? 1 : 0);
+  ++pos.line;
+  if (len > 0 && begin[len - 1] == '\r') --len;
+  line = std::string_view(begin, len);
+  return true;
+}
+
+}  // namespace ncoffset::lang

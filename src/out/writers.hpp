@@ -1,0 +1,67 @@
+// Output sinks: CSV (the contract of design.md) and JSON Lines. Both write through a buffer
+// that is flushed on every alarm and at the end, never leaving a torn line.
+#pragma once
+
+#include <cstdio>
+#include <functional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "ncoffset/path.hpp"
+
+namespace ncoffset::out {
+
+// Resolves a Segment::file index to its name (for JSON Lines).
+using FileNames = std::function<const std::string&(int)>;
+
+class BufferedWriter {
+ public:
+  explicit BufferedWriter(std::FILE* f) : f_(f) {}
+  ~BufferedWriter() { flush(); }
+  void flush() {
+    if (!buf_.size()) return;
+    std::fwrite(buf_.data(), 1, buf_.size(), f_);
+    buf_.clear();
+    std::fflush(f_);
+  }
+  // Flushes whole lines only, once the buffer is large.
+  void lineDone() {
+    if (buf_.size() >= 1 << 16) {
+      std::fwrite(buf_.data(), 1, buf_.size(), f_);
+      buf_.clear();
+    }
+  }
+  fmt::memory_buffer& buf() { return buf_; }
+
+ private:
+  std::FILE* f_;
+  fmt::memory_buffer buf_;
+};
+
+class CsvWriter final : public PathSink {
+ public:
+  explicit CsvWriter(std::FILE* f);
+  void segment(const Segment& s) override;
+  void finish(const Alarm* alarm) override;
+
+ private:
+  BufferedWriter w_;
+};
+
+class JsonLinesWriter final : public PathSink {
+ public:
+  JsonLinesWriter(std::FILE* f, FileNames names) : w_(f), names_(std::move(names)) {}
+  void segment(const Segment& s) override;
+  void message(const SourceLoc& where, const std::string& text) override;
+  void finish(const Alarm* alarm) override;
+
+ private:
+  BufferedWriter w_;
+  FileNames names_;
+};
+
+// Appends `s` as a JSON string literal.
+void appendJsonString(fmt::memory_buffer& b, std::string_view s);
+
+}  // namespace ncoffset::out

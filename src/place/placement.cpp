@@ -1,0 +1,46 @@
+#include "place/placement.hpp"
+
+#include <cmath>
+
+namespace ncoffset::place {
+
+void Placement::motion(const MotionBlock& m) {
+  Segment s;
+  s.line = m.line;
+  s.file = m.file;
+  s.motion = m.motion;
+  s.turns = m.turns;
+  s.feed = m.feed;
+  s.has_feed = m.has_feed;
+  Vec3 normal;
+  normal[m.applicate] = 1;
+  if (coords_ == CoordSystem::WCS) {
+    s.start = m.start;
+    s.end = m.end;
+    s.centre = m.centre;
+    s.normal = normal;
+  } else {
+    s.start = m.frame.apply(m.start) + m.tool_offset;
+    s.end = m.frame.apply(m.end) + m.tool_offset;
+    s.centre = m.frame.apply(m.centre) + m.tool_offset;
+    // The arc turns about frame * normal; a mirrored frame (det < 0) reverses its sense.
+    Vec3 n = m.frame.linear * normal;
+    double len = norm(n);
+    s.normal = len > 0 ? (1.0 / len) * n : normal;
+    bool flip = m.frame.linear.determinant() < 0;
+    if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+      // Report the sense as seen from the positive end of the dominant machine axis.
+      int dom = 0;
+      for (int i = 1; i < 3; ++i)
+        if (std::fabs(s.normal[i]) > std::fabs(s.normal[dom])) dom = i;
+      if (s.normal[dom] < 0) {
+        s.normal = -1.0 * s.normal;
+        flip = !flip;
+      }
+      if (flip) s.motion = m.motion == Motion::G2 ? Motion::G3 : Motion::G2;
+    }
+  }
+  sink_.segment(s);
+}
+
+}  // namespace ncoffset::place
