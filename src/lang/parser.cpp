@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <string>
 
@@ -119,18 +120,43 @@ class Parser {
 
   // Unsigned decimal literal with optional EX exponent (PM-NC: 1.5EX3 = 1500).
   int number(bool negative) {
-    size_t start = i_;
-    bool is_int = true;
-    while (isDigit(peek())) ++i_;
-    if (peek() == '.') {
-      is_int = false;
-      ++i_;
-      while (isDigit(peek())) ++i_;
+    const char* const begin = s_.data() + i_;
+    const char* const end = s_.data() + s_.size();
+    const char* p = begin;
+    // Mantissa and decimals in one pass (Clinger's fast path: exact for <= 15 significant
+    // digits and <= 22 decimals; anything longer goes through std::from_chars).
+    unsigned long long mant = 0;
+    int significant = 0;
+    while (p < end && isDigit(*p)) {
+      mant = mant * 10 + static_cast<unsigned>(*p - '0');
+      significant += (mant != 0);
+      ++p;
     }
-    if (i_ == start || (i_ == start + 1 && s_[start] == '.')) syntax("number expected");
-    double v = 0;
-    auto res = std::from_chars(s_.data() + start, s_.data() + i_, v);
-    if (res.ec != std::errc()) syntax("number out of range");
+    bool is_int = true;
+    int decimals = 0;
+    if (p < end && *p == '.') {
+      is_int = false;
+      ++p;
+      while (p < end && isDigit(*p)) {
+        mant = mant * 10 + static_cast<unsigned>(*p - '0');
+        significant += (mant != 0);
+        ++decimals;
+        ++p;
+      }
+    }
+    size_t len = static_cast<size_t>(p - begin);
+    if (len == 0 || (len == 1 && *begin == '.')) syntax("number expected");
+    double v;
+    static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    if (significant <= 15 && decimals <= 22) {
+      v = static_cast<double>(mant) / kPow10[decimals];
+    } else {
+      auto res = std::from_chars(begin, p, v);
+      if (res.ec != std::errc()) syntax("number out of range");
+    }
+    i_ += len;
     if (peek() == 'E' && peek(1) == 'X') {
       size_t save = i_;
       i_ += 2;
@@ -143,6 +169,7 @@ class Parser {
         if (e > 400) e = 400;
         v *= std::pow(10.0, static_cast<double>(neg ? -e : e));
         is_int = false;
+        if (!std::isfinite(v)) syntax("number out of range");
       }
     }
     Node n;
@@ -775,31 +802,74 @@ class Parser {
 
 }  // namespace
 
-bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
-  out.clear();
-  out.reserve(text.size());
-  bool in_string = false;
-  for (size_t k = 0; k < text.size(); ++k) {
-    unsigned char c = static_cast<unsigned char>(text[k]);
-    if (in_string) {
-      if (c == '"') in_string = false;
-      if (c == 0) {
-        if (bad_column) *bad_column = static_cast<int>(k) + 1;
-        return false;
-      }
-      out.push_back(static_cast<char>(c));
-      continue;
+namespace {
+// Byte classes for normalizeLine: 0 = not allowed outside strings/comments, 1 = copy as is,
+// 2 = ';' (comment starts), 3 = '"' (string starts), 4 = white space to blank.
+struct ByteTable {
+  unsigned char cls[256];
+  char upper[256];
+  constexpr ByteTable() : cls(), upper() {
+    for (int c = 0; c < 256; ++c) {
+      cls[c] = (c >= 32 && c <= 126) ? 1 : 0;
+      upper[c] = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
     }
-    if (c == ';') break;
-    if (c == '"') in_string = true;
-    if (c == '\t' || c == '\r' || c == '\f' || c == '\v') c = ' ';
-    if (c < 32 || c > 126) {
-      if (bad_column) *bad_column = static_cast<int>(k) + 1;
-      return false;
+    cls[static_cast<int>(';')] = 2;
+    cls[static_cast<int>('"')] = 3;
+    for (int c : {'\t', '\r', '\f', '\v'}) {
+      cls[c] = 4;
+      upper[c] = ' ';
     }
-    if (c >= 'a' && c <= 'z') c = static_cast<unsigned char>(c - 'a' + 'A');
-    out.push_back(static_cast<char>(c));
   }
+};
+constexpr ByteTable kBytes;
+}  // namespace
+
+bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
+  out.resize(text.size());
+  char* dst = out.data();
+  const size_t n = text.size();
+  size_t k = 0;
+  // Eight bytes at a time while they are plain upper-case text (0x20..0x5F, no ';' or '"').
+  constexpr std::uint64_t kOnes = 0x0101010101010101ULL, kHigh = 0x8080808080808080ULL;
+  auto hasLess = [](std::uint64_t x, unsigned n) { return (x - kOnes * n) & ~x & kHigh; };
+  auto hasZero = [](std::uint64_t x) { return (x - kOnes) & ~x & kHigh; };
+  while (k + 8 <= n) {
+    std::uint64_t w;
+    std::memcpy(&w, text.data() + k, 8);
+    if (hasLess(w, 0x20) || ((w + kOnes * (0x80 - 0x60)) | w) & kHigh ||
+        hasZero(w ^ (kOnes * ';')) || hasZero(w ^ (kOnes * '"')))
+      break;
+    std::memcpy(dst, &w, 8);
+    dst += 8;
+    k += 8;
+  }
+  while (k < n) {
+    auto c = static_cast<unsigned char>(text[k]);
+    switch (kBytes.cls[c]) {
+      case 1:
+      case 4: *dst++ = kBytes.upper[c]; ++k; continue;
+      case 2: k = n; continue;  // comment: the rest of the line
+      case 3: {
+        *dst++ = '"';
+        ++k;
+        while (k < n && text[k] != '"') {
+          if (text[k] == '\0') {
+            if (bad_column) *bad_column = static_cast<int>(k) + 1;
+            out.resize(static_cast<size_t>(dst - out.data()));
+            return false;
+          }
+          *dst++ = text[k++];
+        }
+        if (k < n) *dst++ = text[k++];
+        continue;
+      }
+      default:
+        if (bad_column) *bad_column = static_cast<int>(k) + 1;
+        out.resize(static_cast<size_t>(dst - out.data()));
+        return false;
+    }
+  }
+  out.resize(static_cast<size_t>(dst - out.data()));
   return true;
 }
 

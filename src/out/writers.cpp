@@ -1,5 +1,7 @@
 #include "out/writers.hpp"
 
+#include <fmt/compile.h>
+
 namespace ncoffset::out {
 
 
@@ -11,7 +13,7 @@ void appendJsonString(fmt::memory_buffer& b, std::string_view s) {
       b.push_back('\\');
       b.push_back(c);
     } else if (u < 0x20 || u >= 0x7f) {
-      fmt::format_to(std::back_inserter(b), "\\u{:04x}", u);
+      fmt::format_to(fmt::appender(b), "\\u{:04x}", u);
     } else {
       b.push_back(c);
     }
@@ -20,20 +22,21 @@ void appendJsonString(fmt::memory_buffer& b, std::string_view s) {
 }
 
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
-  fmt::format_to(std::back_inserter(w_.buf()), "line,motion,x,y,z,cx,cy,cz,feed\n");
+  fmt::format_to(fmt::appender(w_.buf()), "line,motion,x,y,z,cx,cy,cz,feed\n");
 }
 
 void CsvWriter::segment(const Segment& s) {
   auto& b = w_.buf();
-  auto it = std::back_inserter(b);
+  auto it = fmt::appender(b);
   // Shortest representation that round-trips ({fmt} default for double).
-  fmt::format_to(it, "{},{},{},{},{},", s.line, motionName(s.motion), s.end.x + 0.0, s.end.y + 0.0,
-                 s.end.z + 0.0);
+  fmt::format_to(it, FMT_COMPILE("{},{},{},{},{},"), s.line, motionName(s.motion), s.end.x + 0.0,
+                 s.end.y + 0.0, s.end.z + 0.0);
   if (s.motion == Motion::G2 || s.motion == Motion::G3)
-    fmt::format_to(it, "{},{},{},", s.centre.x + 0.0, s.centre.y + 0.0, s.centre.z + 0.0);
+    fmt::format_to(it, FMT_COMPILE("{},{},{},"), s.centre.x + 0.0, s.centre.y + 0.0,
+                   s.centre.z + 0.0);
   else
-    fmt::format_to(it, ",,,");
-  if (s.has_feed) fmt::format_to(it, "{}", s.feed);
+    fmt::format_to(it, FMT_COMPILE(",,,"));
+  if (s.has_feed) fmt::format_to(it, FMT_COMPILE("{}"), s.feed);
   b.push_back('\n');
   w_.lineDone();
 }
@@ -42,7 +45,7 @@ void CsvWriter::finish(const Alarm*) { w_.flush(); }
 
 void JsonLinesWriter::segment(const Segment& s) {
   auto& b = w_.buf();
-  auto it = std::back_inserter(b);
+  auto it = fmt::appender(b);
   fmt::format_to(it, "{{\"line\":{},\"file\":", s.line);
   appendJsonString(b, names_(s.file));
   fmt::format_to(it, ",\"motion\":\"{}\",\"x\":{},\"y\":{},\"z\":{}", motionName(s.motion),
@@ -58,22 +61,22 @@ void JsonLinesWriter::segment(const Segment& s) {
 
 void JsonLinesWriter::message(const SourceLoc& where, const std::string& text) {
   auto& b = w_.buf();
-  fmt::format_to(std::back_inserter(b), "{{\"message\":");
+  fmt::format_to(fmt::appender(b), "{{\"message\":");
   appendJsonString(b, text);
-  fmt::format_to(std::back_inserter(b), ",\"file\":");
+  fmt::format_to(fmt::appender(b), ",\"file\":");
   appendJsonString(b, where.file);
-  fmt::format_to(std::back_inserter(b), ",\"line\":{}}}\n", where.line);
+  fmt::format_to(fmt::appender(b), ",\"line\":{}}}\n", where.line);
   w_.lineDone();
 }
 
 void JsonLinesWriter::finish(const Alarm* alarm) {
   if (alarm) {
     auto& b = w_.buf();
-    fmt::format_to(std::back_inserter(b), "{{\"alarm\":{},\"file\":", alarm->number);
+    fmt::format_to(fmt::appender(b), "{{\"alarm\":{},\"file\":", alarm->number);
     appendJsonString(b, alarm->where.file);
-    fmt::format_to(std::back_inserter(b), ",\"line\":{},\"text\":", alarm->where.line);
+    fmt::format_to(fmt::appender(b), ",\"line\":{},\"text\":", alarm->where.line);
     appendJsonString(b, alarm->text);
-    fmt::format_to(std::back_inserter(b), "}}\n");
+    fmt::format_to(fmt::appender(b), "}}\n");
   }
   w_.flush();
 }
