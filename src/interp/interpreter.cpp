@@ -274,8 +274,18 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
   const bool forward = kind == 1 || kind == 3 || kind == 4;
   const bool backward = kind == 2 || kind == 3 || kind == 4;
   std::string label;
+  long long block_no = -1;
   if (target.kind == NodeKind::BlockNo) {
-    long long n = static_cast<long long>(target.number);
+    block_no = static_cast<long long>(target.number);
+  } else if (target.kind != NodeKind::Name || findVariable(target.text)) {
+    // A STRING variable may hold a block number ("N200" or ":200") instead of a label.
+    Value v = eval_.eval(block_, target_node);
+    if (v.isText() && v.str.size() > 1 && (v.str[0] == 'N' || v.str[0] == 'n' || v.str[0] == ':') &&
+        v.str.find_first_not_of("0123456789", 1) == std::string::npos && v.str.size() < 19)
+      block_no = std::stoll(v.str.substr(1));
+  }
+  if (block_no >= 0) {
+    long long n = block_no;
     auto it = prog.block_numbers.find(n);
     if (it == prog.block_numbers.end()) {
       // One scan of the file per distinct target number.
@@ -354,6 +364,36 @@ void Interpreter::returnFromSubprogram() {
   levels_.pop_back();
 }
 
+LoadedProgram* Interpreter::findProgram(std::string_view name) {
+  std::string key(name);
+  if (auto it = by_name_.find(key); it != by_name_.end()) return it->second;
+  if (!dir_scanned_) {
+    dir_scanned_ = true;
+    std::error_code ec;
+    std::filesystem::path dir = search_dir_.empty() ? std::filesystem::path(".") : search_dir_;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+      std::string fn = e.path().filename().string();
+      for (auto& c : fn) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      dir_entries_.emplace(fn, search_dir_.empty() ? e.path().filename() : e.path());
+    }
+  }
+  const std::string candidates[] = {key + ".SPF", "_N_" + key + "_SPF", key + ".MPF",
+                                    "_N_" + key + "_MPF", key};
+  for (const auto& c : candidates) {
+    auto it = dir_entries_.find(c);
+    if (it == dir_entries_.end()) continue;
+    std::string err;
+    auto src = lang::SourceFile::load(it->second, &err);
+    if (!src) continue;
+    int saved_file = file_;
+    LoadedProgram* prog = &load(std::move(src));
+    file_ = saved_file;
+    by_name_.emplace(key, prog);
+    return prog;
+  }
+  return nullptr;
+}
+
 void Interpreter::callSubprogram(std::string_view name, long long repeat) {
   if (static_cast<int>(levels_.size()) >= options_.limits.max_program_levels)
     raise(alarm_no::kSubprogramDepth,
@@ -361,40 +401,11 @@ void Interpreter::callSubprogram(std::string_view name, long long repeat) {
                       options_.limits.max_program_levels));
   if (repeat < 1 || repeat > 9999)
     raise(alarm_no::kValueRange, fmt::format("value range exceeded: P{} (pass count 1..9999)", repeat));
-  std::string key(name);
-  LoadedProgram* prog = nullptr;
-  if (auto it = by_name_.find(key); it != by_name_.end()) {
-    prog = it->second;
-  } else {
-    if (!dir_scanned_) {
-      dir_scanned_ = true;
-      std::error_code ec;
-      std::filesystem::path dir = search_dir_.empty() ? std::filesystem::path(".") : search_dir_;
-      for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-        std::string fn = e.path().filename().string();
-        for (auto& c : fn) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-        dir_entries_.emplace(fn, e.path());
-      }
-    }
-    const std::string candidates[] = {key + ".SPF", "_N_" + key + "_SPF", key + ".MPF",
-                                      "_N_" + key + "_MPF", key};
-    for (const auto& c : candidates) {
-      auto it = dir_entries_.find(c);
-      if (it == dir_entries_.end()) continue;
-      std::string err;
-      auto src = lang::SourceFile::load(it->second, &err);
-      if (!src) continue;
-      int saved_file = file_;
-      prog = &load(std::move(src));
-      file_ = saved_file;
-      break;
-    }
-    if (!prog)
-      raise(alarm_no::kProgramNotFound,
-            fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
-                        key, key, key));
-    by_name_.emplace(key, prog);
-  }
+  LoadedProgram* prog = findProgram(name);
+  if (!prog)
+    raise(alarm_no::kProgramNotFound,
+          fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
+                      name, name, name));
   ProgramLevel lvl;
   lvl.program = prog;
   lvl.repeat_left = repeat - 1;
@@ -479,8 +490,10 @@ size_t Interpreter::elementIndex(const UserVariable& var, std::span<const Value>
 bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool indexed, Value& out) {
   if (UserVariable* v = findVariable(name)) {
     if (v->isArray()) {
-      if (!indexed)
-        raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", name));
+      if (!indexed) {
+        out = {lang::Type::ArrayRef, 0, std::string(name), {}};  // whole array: call argument
+        return true;
+      }
       out = v->data[elementIndex(*v, idx, name)];
     } else {
       if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", name));
@@ -488,7 +501,12 @@ bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool i
     }
     return true;
   }
-  return readSystem(name, idx, indexed, out);
+  if (readSystem(name, idx, indexed, out)) return true;
+  if (!indexed && name.size() == 1 && (name[0] == 'X' || name[0] == 'Y' || name[0] == 'Z')) {
+    out = {lang::Type::Axis, 0, std::string(name), {}};  // a geometry axis name as an AXIS value
+    return true;
+  }
+  return false;
 }
 
 Value Interpreter::readR(double number) {
@@ -499,6 +517,28 @@ Value Interpreter::readR(double number) {
 }
 
 void Interpreter::assign(const Stmt& st) {
+  const Node& target = block_.node(st.target);
+  if (target.kind == NodeKind::Index && target.text == "AX" && !findVariable("AX")) {
+    // Indirect axis programming AX[axis]=value (PM-JP "Indirect programming").
+    if (target.b != 1) raise(alarm_no::kArrayIndex1, "AX[..] takes one axis");
+    Stmt word = st;
+    Value axis = eval_.evalOrSymbol(block_, block_.arg(target, 0));
+    if (!axis.isText()) raise(alarm_no::kTypeMismatch, "AX[..] needs an axis name");
+    if (axis.str != "X" && axis.str != "Y" && axis.str != "Z")
+      raise(alarm_no::kNotModelled,
+            fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)", axis.str));
+    static constexpr std::string_view kAxes[] = {"X", "Y", "Z"};
+    word.name = kAxes[axis.str[0] - 'X'];
+    const Node& rhs = block_.node(st.expr);
+    if (rhs.kind == NodeKind::Call && (rhs.text == "AC" || rhs.text == "IC") && rhs.b == 1) {
+      word.mode = rhs.text == "AC" ? lang::AxisMode::AC : lang::AxisMode::IC;
+      word.expr = block_.arg(rhs, 0);
+    }
+    word.kind = StmtKind::Word;
+    word.has_equals = false;
+    collectWord(word);
+    return;
+  }
   Value v = eval_.eval(block_, st.expr);
   store(block_.node(st.target), v);
 }

@@ -70,6 +70,9 @@ class Interpreter final : public lang::Environment {
   void jumpTo(int kind, int target_node, bool quiet);
   void continueAfter(const lang::TextPos& line);
   void callSubprogram(std::string_view name, long long repeat);
+  // Finds a subprogram file beside the main program (nullptr if there is none).
+  LoadedProgram* findProgram(std::string_view name);
+  bool programExists(std::string_view name) { return findProgram(name) != nullptr; }
   void returnFromSubprogram();
   void endProgram();
   const lang::ControlLink& link() const;

@@ -122,6 +122,10 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
   if (int id = data_.find(name); id >= 0) {
     if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
     data_.set(id, lang::toNumber(v, "machine/setting data"));
+    if (data_.spec(id).number == 28050) {  // MD28050 MM_NUM_R_PARAM: number of R parameters
+      r_.resize(static_cast<size_t>(data_.get(id)), 0.0);
+      r_written_.resize(r_.size(), false);
+    }
     return;
   }
   if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
@@ -199,6 +203,9 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
   if (name == "LENTOAX" || name == "GETTCOR" || name == "SETTCOR")
     raise(alarm_no::kNotModelled,
           fmt::format("{} is not modelled by ncoffset yet: it arrives with the tool-offset stage", name));
+  if (programExists(name))
+    raise(alarm_no::kNotModelled,
+          fmt::format("subprogram call {}(...) with parameters is not modelled by ncoffset", name));
   raise(alarm_no::kNameNotDefined,
         fmt::format("name {} not defined or option/function not available", name));
 }

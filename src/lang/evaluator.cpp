@@ -37,6 +37,7 @@ const char* typeName(Type t) {
     case Type::Axis: return "AXIS";
     case Type::Frame: return "FRAME";
     case Type::Symbol: return "name";
+    case Type::ArrayRef: return "array";
     case Type::Empty: return "empty";
   }
   return "?";
@@ -46,6 +47,8 @@ double toNumber(const Value& v, const char* what) {
   if (v.isNumeric()) return v.num;
   if (v.type == Type::Symbol)
     raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", v.str));
+  if (v.type == Type::ArrayRef)
+    raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", v.str));
   raise(alarm_no::kTypeMismatch,
         fmt::format("operation not compatible with data type: {} is {}, a number is needed", what,
                     typeName(v.type)));

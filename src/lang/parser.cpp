@@ -569,6 +569,20 @@ class Parser {
       }
       i_ = save;
     }
+    // Address with a numeric suffix and '=': I1=, J1=, K1= (CIP intermediate point) and similar.
+    if (isDigit(peek())) {
+      size_t save = i_;
+      while (isDigit(peek())) ++i_;
+      size_t end = i_;
+      skipSpaces();
+      if (peek() == '=' && peek(1) != '=') {
+        ++i_;
+        addWord(std::string_view(s_).substr(save - 1, end - save + 1), -1,
+                expression(), col, true);
+        return;
+      }
+      i_ = save;
+    }
     bool negative = false;
     if (peek() == '-' || peek() == '+') negative = s_[i_++] == '-';
     int value = number(negative);
@@ -664,10 +678,19 @@ class Parser {
       st.target = addNode(n);
       skipSpaces();
       if (peek() == '(') {
+        // Formal parameters (e.g. `REAL LEN, VAR INT N`): counted, not parsed further.
         ++i_;
-        auto [first, count] = argList(')');
-        st.ext = count;
-        (void)first;
+        int depth = 1, count = 0;
+        bool any = false;
+        while (i_ < s_.size() && depth > 0) {
+          char ch = s_[i_++];
+          if (ch == '(') ++depth;
+          else if (ch == ')') --depth;
+          else if (ch == ',' && depth == 1) ++count;
+          else if (ch != ' ') any = true;
+        }
+        if (depth != 0) syntax("')' expected after the PROC parameters");
+        st.ext = any ? count + 1 : 0;
       }
       b_.stmts.push_back(st);
       // Attributes such as SAVE or DISPLOF may follow; they are kept as calls.

@@ -29,6 +29,8 @@ struct Case {
   std::string name;
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 std::vector<Case> discover() {
   std::vector<Case> cases;
   for (const auto& e : fs::recursive_directory_iterator(NCOFFSET_PROGRAMS)) {
