@@ -92,7 +92,12 @@ void Frame::addTranslation(Vec3 t) {
   fine = fine + f.linear * t;
 }
 
-void Frame::addRotation(const Mat3& r) { rotation = rpyAngles(rotationMatrix() * r); }
+void Frame::addRotation(const Mat3& r) {
+  // The rotation acts inside the scaled and mirrored system: R·S·M·r = (R·M·r·M)·S·M, since a
+  // diagonal mirror M is its own inverse and a (uniform) scale commutes with rotations.
+  Mat3 m = Mat3::diagonal({mirror[0] ? -1.0 : 1.0, mirror[1] ? -1.0 : 1.0, mirror[2] ? -1.0 : 1.0});
+  rotation = rpyAngles(rotationMatrix() * (m * r * m));
+}
 
 void Frame::addScale(Vec3 s) { scale = {scale.x * s.x, scale.y * s.y, scale.z * s.z}; }
 

@@ -494,6 +494,9 @@ class Parser {
       b_.stmts.push_back(st);
       return;
     }
+    // Programs are called by names of at least two characters (PM-NC 12/2019 p491): a lone
+    // letter is an address whose value is missing.
+    if (name.size() == 1) syntax(std::string("value missing after address ") + name[0]);
     Stmt st;
     st.kind = StmtKind::Call;
     st.name = name;

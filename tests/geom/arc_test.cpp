@@ -1,0 +1,250 @@
+// Circle programming (src/geom/arc.hpp): centre, CR=, AR=, full circle, end point tolerance
+// (MD21000/MD21010, alarm 14040) and under/over-determined circles (alarm 14045).
+#include "geom/arc.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::geom {
+namespace {
+
+constexpr double kTol = 1e-9;
+
+ArcRequest request(Vec2 start, bool ccw) {
+  ArcRequest r;
+  r.start = start;
+  r.ccw = ccw;
+  return r;
+}
+
+int alarmOf(const ArcRequest& r) {
+  try {
+    solveArc(r);
+  } catch (const AlarmError& e) {
+    return e.number();
+  }
+  return 0;
+}
+
+void expectPoint(Vec2 got, double a, double o, double tol = kTol) {
+  EXPECT_NEAR(got.a, a, tol);
+  EXPECT_NEAR(got.o, o, tol);
+}
+
+// Signed sweep from start to end about centre in the direction of the arc (degrees, 0..360].
+double sweep(Vec2 start, Vec2 end, Vec2 c, bool ccw) {
+  double s = std::atan2(start.o - c.o, start.a - c.a);
+  double e = std::atan2(end.o - c.o, end.a - c.a);
+  double d = (ccw ? e - s : s - e) * 180 / 3.14159265358979323846;
+  while (d <= 1e-9) d += 360;
+  while (d > 360 + 1e-9) d -= 360;
+  return d;
+}
+
+TEST(SolveArc, Centre) {
+  ArcRequest r = request({0, 0}, true);
+  r.end = Vec2{10, 0};
+  r.centre = Vec2{5, 0};
+  ArcSolution s = solveArc(r);
+  expectPoint(s.centre, 5, 0);
+  expectPoint(s.end, 10, 0);
+  EXPECT_NEAR(s.radius, 5, kTol);
+}
+
+TEST(SolveArc, FullCircleWithCentre) {
+  ArcRequest r = request({0, 0}, false);
+  r.centre = Vec2{5, 0};
+  ArcSolution s = solveArc(r);  // no end point: back to the start
+  expectPoint(s.end, 0, 0);
+  expectPoint(s.centre, 5, 0);
+  EXPECT_NEAR(s.radius, 5, kTol);
+  r.end = Vec2{0, 0};
+  expectPoint(solveArc(r).end, 0, 0);
+}
+
+TEST(SolveArc, RadiusPositiveUpTo180Degrees) {
+  // Chord 8, radius 5: centre 3 off the chord's middle.
+  ArcRequest cw = request({0, 0}, false);
+  cw.end = Vec2{8, 0};
+  cw.cr = 5;
+  ArcSolution s = solveArc(cw);
+  expectPoint(s.centre, 4, -3);
+  EXPECT_NEAR(s.radius, 5, kTol);
+  EXPECT_LT(sweep(cw.start, s.end, s.centre, false), 180);
+
+  ArcRequest ccw = cw;
+  ccw.ccw = true;
+  s = solveArc(ccw);
+  expectPoint(s.centre, 4, 3);
+  EXPECT_LT(sweep(ccw.start, s.end, s.centre, true), 180);
+}
+
+TEST(SolveArc, RadiusNegativeBeyond180Degrees) {
+  ArcRequest cw = request({0, 0}, false);
+  cw.end = Vec2{8, 0};
+  cw.cr = -5;
+  ArcSolution s = solveArc(cw);
+  expectPoint(s.centre, 4, 3);
+  EXPECT_NEAR(s.radius, 5, kTol);
+  EXPECT_GT(sweep(cw.start, s.end, s.centre, false), 180);
+
+  ArcRequest ccw = cw;
+  ccw.ccw = true;
+  s = solveArc(ccw);
+  expectPoint(s.centre, 4, -3);
+  EXPECT_GT(sweep(ccw.start, s.end, s.centre, true), 180);
+}
+
+TEST(SolveArc, RadiusInAnyDirection) {
+  // Chord along -Y from (10,10) to (10,2), CR=5, G3: centre left of the travel direction.
+  ArcRequest r = request({10, 10}, true);
+  r.end = Vec2{10, 2};
+  r.cr = 5;
+  ArcSolution s = solveArc(r);
+  expectPoint(s.centre, 13, 6);
+  EXPECT_NEAR(std::hypot(s.end.a - s.centre.a, s.end.o - s.centre.o), 5, kTol);
+  EXPECT_NEAR(std::hypot(r.start.a - s.centre.a, r.start.o - s.centre.o), 5, kTol);
+}
+
+TEST(SolveArc, RadiusHalfCircle) {
+  ArcRequest r = request({0, 0}, true);
+  r.end = Vec2{10, 0};
+  r.cr = 5;
+  expectPoint(solveArc(r).centre, 5, 0);
+  r.cr = -5;
+  expectPoint(solveArc(r).centre, 5, 0);
+}
+
+TEST(SolveArc, RadiusTooSmallForTheChord) {
+  ArcRequest r = request({0, 0}, true);
+  r.end = Vec2{10.005, 0};  // within the 0.01 tolerance: accepted as a half circle
+  r.cr = 5;
+  ArcSolution s = solveArc(r);
+  expectPoint(s.centre, 5.0025, 0);
+  r.end = Vec2{10.1, 0};
+  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+}
+
+TEST(SolveArc, OpeningAngleWithEndPoint) {
+  ArcRequest r = request({0, 0}, true);
+  r.end = Vec2{10, 0};
+  r.ar = 90;
+  ArcSolution s = solveArc(r);
+  expectPoint(s.centre, 5, 5);
+  EXPECT_NEAR(s.radius, std::sqrt(50.0), kTol);
+  EXPECT_NEAR(sweep(r.start, s.end, s.centre, true), 90, 1e-9);
+
+  r.ccw = false;
+  s = solveArc(r);
+  expectPoint(s.centre, 5, -5);
+  EXPECT_NEAR(sweep(r.start, s.end, s.centre, false), 90, 1e-9);
+
+  r.ccw = true;
+  r.ar = 270;
+  s = solveArc(r);
+  expectPoint(s.centre, 5, -5);
+  EXPECT_NEAR(sweep(r.start, s.end, s.centre, true), 270, 1e-9);
+
+  r.ar = 180;
+  s = solveArc(r);
+  expectPoint(s.centre, 5, 0);
+}
+
+TEST(SolveArc, OpeningAngleWithCentre) {
+  ArcRequest r = request({10, 0}, true);
+  r.centre = Vec2{0, 0};
+  r.ar = 90;
+  ArcSolution s = solveArc(r);
+  expectPoint(s.end, 0, 10);
+  EXPECT_NEAR(s.radius, 10, kTol);
+
+  r.ccw = false;
+  expectPoint(solveArc(r).end, 0, -10);
+
+  r.ar = 360;  // a full circle by angle
+  expectPoint(solveArc(r).end, 10, 0);
+}
+
+TEST(SolveArc, EndPointTolerance) {
+  ArcRequest r = request({10, 0}, true);
+  r.centre = Vec2{0, 0};
+  r.end = Vec2{0, 10.009};  // tolerance max(0.01, 0.001 * 10) = 0.01
+  EXPECT_EQ(alarmOf(r), 0);
+  EXPECT_NEAR(solveArc(r).radius, 10, kTol);  // radius from the start point
+  r.end = Vec2{0, 10.011};
+  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+  r.end = Vec2{0, 9.989};
+  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+
+  // Large radius: the factor dominates (0.001 * 100 = 0.1).
+  ArcRequest big = request({100, 0}, false);
+  big.centre = Vec2{0, 0};
+  big.end = Vec2{0, -100.09};
+  EXPECT_EQ(alarmOf(big), 0);
+  big.end = Vec2{0, -100.11};
+  EXPECT_EQ(alarmOf(big), alarm_no::kCircleEndPoint);
+
+  // Machine data change the tolerance.
+  r.end = Vec2{0, 10.05};
+  r.tol_const = 0.1;
+  EXPECT_EQ(alarmOf(r), 0);
+  r.tol_const = 0.001;
+  r.tol_factor = 0;
+  r.end = Vec2{0, 10.002};
+  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+}
+
+TEST(SolveArc, NotDefined14045) {
+  ArcRequest none = request({0, 0}, true);
+  none.end = Vec2{10, 0};
+  EXPECT_EQ(alarmOf(none), alarm_no::kCircleProgramming);
+
+  ArcRequest cr_centre = none;
+  cr_centre.cr = 5;
+  cr_centre.centre = Vec2{5, 0};
+  EXPECT_EQ(alarmOf(cr_centre), alarm_no::kCircleProgramming);
+
+  ArcRequest cr_ar = none;
+  cr_ar.cr = 5;
+  cr_ar.ar = 90;
+  EXPECT_EQ(alarmOf(cr_ar), alarm_no::kCircleProgramming);
+
+  ArcRequest ar_centre_end = none;
+  ar_centre_end.ar = 90;
+  ar_centre_end.centre = Vec2{5, 5};
+  EXPECT_EQ(alarmOf(ar_centre_end), alarm_no::kCircleProgramming);
+
+  ArcRequest cr_no_end = request({0, 0}, true);
+  cr_no_end.cr = 5;
+  EXPECT_EQ(alarmOf(cr_no_end), alarm_no::kCircleProgramming);
+
+  ArcRequest cr_full = request({0, 0}, true);
+  cr_full.end = Vec2{0, 0};
+  cr_full.cr = 5;
+  EXPECT_EQ(alarmOf(cr_full), alarm_no::kCircleProgramming);
+
+  ArcRequest cr_zero = none;
+  cr_zero.cr = 0;
+  EXPECT_EQ(alarmOf(cr_zero), alarm_no::kCircleProgramming);
+
+  ArcRequest centre_at_start = none;
+  centre_at_start.centre = Vec2{0, 0};
+  EXPECT_EQ(alarmOf(centre_at_start), alarm_no::kCircleProgramming);
+
+  for (double ar : {0.0, 360.0, -90.0, 400.0}) {
+    ArcRequest bad_ar = none;
+    bad_ar.ar = ar;
+    EXPECT_EQ(alarmOf(bad_ar), alarm_no::kCircleProgramming) << ar;
+  }
+
+  ArcRequest ar_full = request({0, 0}, true);
+  ar_full.end = Vec2{0, 0};
+  ar_full.ar = 90;
+  EXPECT_NE(alarmOf(ar_full), 0);
+}
+
+}  // namespace
+}  // namespace ncoffset::geom

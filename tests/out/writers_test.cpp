@@ -1,0 +1,222 @@
+// Output sinks (src/out/writers.hpp): the CSV contract of design.md and JSON Lines.
+#include "out/writers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace ncoffset::out {
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+std::string readAll(std::FILE* f) {
+  std::fflush(f);
+  std::rewind(f);
+  std::string s;
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
+  return s;
+}
+
+std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::istringstream is(s);
+  std::string l;
+  while (std::getline(is, l)) out.push_back(l);
+  return out;
+}
+
+Segment line(int no, Motion m, Vec3 end, double feed = 0, bool has_feed = false) {
+  Segment s;
+  s.line = no;
+  s.motion = m;
+  s.end = end;
+  s.feed = feed;
+  s.has_feed = has_feed;
+  return s;
+}
+
+// Built member by member (GCC 12 warns falsely on the nested aggregate initialiser).
+Alarm makeAlarm(int number, const std::string& file, int at, const std::string& text) {
+  Alarm a;
+  a.number = number;
+  a.where.file = file;
+  a.where.line = at;
+  a.text = text;
+  return a;
+}
+
+Segment arc(int no, Motion m, Vec3 end, Vec3 centre, double feed) {
+  Segment s = line(no, m, end, feed, true);
+  s.centre = centre;
+  return s;
+}
+
+const std::string kHeader = "line,motion,x,y,z,cx,cy,cz,feed";
+
+TEST(CsvWriter, HeaderOnlyForAnEmptyPath) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  {
+    CsvWriter w(f.get());
+    w.finish(nullptr);
+  }
+  EXPECT_EQ(readAll(f.get()), kHeader + "\n");
+}
+
+TEST(CsvWriter, RowsForLinesAndArcs) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  {
+    CsvWriter w(f.get());
+    w.segment(line(3, Motion::G0, {0, 0, 5}));
+    w.segment(line(4, Motion::G1, {10, -2.5, 5}, 100, true));
+    w.segment(arc(5, Motion::G2, {20, -2.5, 5}, {15, -2.5, 5}, 100));
+    w.segment(arc(6, Motion::G3, {10, -2.5, 5}, {15, -2.5, 5}, 250.5));
+    w.finish(nullptr);
+  }
+  auto l = lines(readAll(f.get()));
+  ASSERT_EQ(l.size(), 5u);
+  EXPECT_EQ(l[0], kHeader);
+  EXPECT_EQ(l[1], "3,G0,0,0,5,,,,");          // no centre, no feed for G0
+  EXPECT_EQ(l[2], "4,G1,10,-2.5,5,,,,100");   // empty centre for lines
+  EXPECT_EQ(l[3], "5,G2,20,-2.5,5,15,-2.5,5,100");
+  EXPECT_EQ(l[4], "6,G3,10,-2.5,5,15,-2.5,5,250.5");
+}
+
+TEST(CsvWriter, ShortestRoundTripNumbers) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  const double third = 1.0 / 3.0;
+  const double big = 123456789.123;
+  const double tiny = 0.1 + 0.2;  // 0.30000000000000004
+  {
+    CsvWriter w(f.get());
+    w.segment(line(1, Motion::G1, {0.1, third, -0.0}, 0.1, true));
+    w.segment(line(2, Motion::G1, {big, tiny, 1e-3}, 1000, true));
+    w.finish(nullptr);
+  }
+  auto l = lines(readAll(f.get()));
+  ASSERT_EQ(l.size(), 3u);
+  EXPECT_EQ(l[1], "1,G1,0.1,0.3333333333333333,0,,,,0.1");  // -0 prints as 0
+  EXPECT_EQ(l[2], "2,G1,123456789.123,0.30000000000000004,0.001,,,,1000");
+  // Every number reads back to the same double.
+  std::string y = l[1].substr(l[1].find(",0.3") + 1);
+  EXPECT_EQ(std::strtod(y.c_str(), nullptr), third);
+  std::string t = l[2].substr(l[2].find(",0.3") + 1);
+  EXPECT_EQ(std::strtod(t.c_str(), nullptr), tiny);
+}
+
+TEST(CsvWriter, AlarmDoesNotTearTheOutput) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  {
+    CsvWriter w(f.get());
+    w.segment(line(1, Motion::G1, {1, 2, 3}, 10, true));
+    Alarm a = makeAlarm(14051, "T.MPF", 2, "arithmetic error");
+    w.finish(&a);
+    // Everything is on disk once finish returns, even before the writer goes away.
+    std::string s = readAll(f.get());
+    EXPECT_EQ(s, kHeader + "\n1,G1,1,2,3,,,,10\n");  // alarms go to stderr, not into the CSV
+  }
+}
+
+TEST(CsvWriter, ManyRowsAreAllWritten) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  const int n = 20000;  // more than one buffer's worth
+  {
+    CsvWriter w(f.get());
+    for (int i = 1; i <= n; ++i) w.segment(line(i, Motion::G1, {double(i), 0, 0}, 1, true));
+    w.finish(nullptr);
+  }
+  auto l = lines(readAll(f.get()));
+  ASSERT_EQ(l.size(), static_cast<size_t>(n + 1));
+  EXPECT_EQ(l[1], "1,G1,1,0,0,,,,1");
+  EXPECT_EQ(l[n], std::to_string(n) + ",G1," + std::to_string(n) + ",0,0,,,,1");
+}
+
+// ---- JSON Lines ------------------------------------------------------------------------------
+
+FileNames names() {
+  static const std::vector<std::string> kNames = {"MAIN.MPF", "dir\\SUB \"1\".SPF"};
+  return [](int i) -> const std::string& { return kNames.at(static_cast<size_t>(i)); };
+}
+
+TEST(JsonLinesWriter, SegmentsMessagesAndAlarmRecord) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  {
+    JsonLinesWriter w(f.get(), names());
+    w.segment(line(1, Motion::G0, {0, 0, 5}));
+    Segment a = arc(2, Motion::G2, {20, 0, 5}, {15, 0, 5}, 100);
+    a.file = 1;
+    a.turns = 2;
+    a.normal = {0, 0, 1};
+    w.segment(a);
+    w.message({"MAIN.MPF", 3}, "tab\there \"quoted\"");
+    Alarm al = makeAlarm(14040, "MAIN.MPF", 4, "error in end point of circle");
+    w.finish(&al);
+  }
+  auto l = lines(readAll(f.get()));
+  ASSERT_EQ(l.size(), 4u);
+  EXPECT_EQ(l[0], R"({"line":1,"file":"MAIN.MPF","motion":"G0","x":0,"y":0,"z":5})");
+  EXPECT_EQ(l[1],
+            R"({"line":2,"file":"dir\\SUB \"1\".SPF","motion":"G2","x":20,"y":0,"z":5,)"
+            R"("cx":15,"cy":0,"cz":5,"normal":[0,0,1],"turns":2,"feed":100})");
+  EXPECT_EQ(l[2], R"({"message":"tab\u0009here \"quoted\"","file":"MAIN.MPF","line":3})");
+  EXPECT_EQ(l[3],
+            R"({"alarm":14040,"file":"MAIN.MPF","line":4,"text":"error in end point of circle"})");
+}
+
+TEST(JsonLinesWriter, NoAlarmRecordOnNormalEnd) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  {
+    JsonLinesWriter w(f.get(), names());
+    w.segment(line(1, Motion::G1, {0.1, 1.0 / 3.0, 0}, 5, true));
+    w.finish(nullptr);
+  }
+  auto l = lines(readAll(f.get()));
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_EQ(l[0],
+            R"({"line":1,"file":"MAIN.MPF","motion":"G1","x":0.1,"y":0.3333333333333333,"z":0,"feed":5})");
+}
+
+TEST(JsonString, Escaping) {
+  auto json = [](std::string_view s) {
+    fmt::memory_buffer b;
+    appendJsonString(b, s);
+    return fmt::to_string(b);
+  };
+  EXPECT_EQ(json("plain"), "\"plain\"");
+  EXPECT_EQ(json("a\"b"), "\"a\\\"b\"");
+  EXPECT_EQ(json("a\\b"), "\"a\\\\b\"");
+  EXPECT_EQ(json("line\nbreak"), "\"line\\u000abreak\"");
+  EXPECT_EQ(json(std::string_view("\0\x1f", 2)), "\"\\u0000\\u001f\"");
+  EXPECT_EQ(json("\x7f"), "\"\\u007f\"");
+  EXPECT_EQ(json(""), "\"\"");
+  // Output is plain ASCII whatever the input.
+  std::string s = json("\xC3\xA4\xFF");
+  for (char c : s) EXPECT_LT(static_cast<unsigned char>(c), 0x80u);
+}
+
+TEST(MotionName, Names) {
+  EXPECT_STREQ(motionName(Motion::G0), "G0");
+  EXPECT_STREQ(motionName(Motion::G1), "G1");
+  EXPECT_STREQ(motionName(Motion::G2), "G2");
+  EXPECT_STREQ(motionName(Motion::G3), "G3");
+}
+
+}  // namespace
+}  // namespace ncoffset::out

@@ -1,0 +1,190 @@
+// Placement stage (src/place/placement.hpp): WCS motions become MCS segments through the
+// block's frame; a mirroring frame reverses the arc sense; `--coords wcs` leaves points alone.
+#include "place/placement.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace ncoffset::place {
+namespace {
+
+class Collect final : public PathSink {
+ public:
+  std::vector<Segment> segments;
+  void segment(const Segment& s) override { segments.push_back(s); }
+  void finish(const Alarm*) override {}
+};
+
+void expectVec(Vec3 v, double x, double y, double z) {
+  EXPECT_NEAR(v.x, x, 1e-12);
+  EXPECT_NEAR(v.y, y, 1e-12);
+  EXPECT_NEAR(v.z, z, 1e-12);
+}
+
+// A quarter circle in G17, clockwise from (10,0) to (0,-10) about the origin.
+MotionBlock quarterArc(Motion m = Motion::G2) {
+  MotionBlock b;
+  b.motion = m;
+  b.start = {10, 0, 0};
+  b.end = {0, -10, 0};
+  b.centre = {0, 0, 0};
+  b.applicate = 2;
+  b.feed = 200;
+  b.has_feed = true;
+  b.line = 12;
+  b.file = 1;
+  return b;
+}
+
+Affine affineOf(const Frame& f) { return f.affine(); }
+
+Segment place(const MotionBlock& b, CoordSystem cs) {
+  Collect sink;
+  Placement p(sink, cs);
+  p.motion(b);
+  EXPECT_EQ(sink.segments.size(), 1u);
+  return sink.segments.empty() ? Segment{} : sink.segments[0];
+}
+
+TEST(Placement, IdentityFrameCopiesTheBlock) {
+  Segment s = place(quarterArc(), CoordSystem::MCS);
+  EXPECT_EQ(s.motion, Motion::G2);
+  EXPECT_EQ(s.line, 12);
+  EXPECT_EQ(s.file, 1);
+  EXPECT_EQ(s.feed, 200);
+  EXPECT_TRUE(s.has_feed);
+  expectVec(s.start, 10, 0, 0);
+  expectVec(s.end, 0, -10, 0);
+  expectVec(s.centre, 0, 0, 0);
+  expectVec(s.normal, 0, 0, 1);
+}
+
+TEST(Placement, TranslationAndToolOffset) {
+  MotionBlock b = quarterArc();
+  Frame f;
+  f.coarse = {100, 50, 0};
+  b.frame = affineOf(f);
+  b.tool_offset = {0, 0, 30};
+  Segment s = place(b, CoordSystem::MCS);
+  expectVec(s.start, 110, 50, 30);
+  expectVec(s.end, 100, 40, 30);
+  expectVec(s.centre, 100, 50, 30);
+  EXPECT_EQ(s.motion, Motion::G2);
+}
+
+TEST(Placement, MirrorOfOnePlaneAxisSwapsG2AndG3) {
+  Frame f;
+  f.mirror = {true, false, false};
+  for (Motion m : {Motion::G2, Motion::G3}) {
+    MotionBlock b = quarterArc(m);
+    b.frame = affineOf(f);
+    Segment s = place(b, CoordSystem::MCS);
+    EXPECT_EQ(s.motion, m == Motion::G2 ? Motion::G3 : Motion::G2);
+    expectVec(s.start, -10, 0, 0);
+    expectVec(s.end, 0, -10, 0);
+    expectVec(s.centre, 0, 0, 0);
+    expectVec(s.normal, 0, 0, 1);
+  }
+  f.mirror = {false, true, false};
+  MotionBlock b = quarterArc();
+  b.frame = affineOf(f);
+  EXPECT_EQ(place(b, CoordSystem::MCS).motion, Motion::G3);
+}
+
+TEST(Placement, MirrorOfTheApplicateKeepsTheSense) {
+  // Mirroring Z does not change an arc in the X/Y plane seen from +Z.
+  Frame f;
+  f.mirror = {false, false, true};
+  MotionBlock b = quarterArc();
+  b.start.z = b.end.z = b.centre.z = 5;
+  b.frame = affineOf(f);
+  Segment s = place(b, CoordSystem::MCS);
+  EXPECT_EQ(s.motion, Motion::G2);
+  expectVec(s.end, 0, -10, -5);
+  expectVec(s.normal, 0, 0, 1);
+}
+
+TEST(Placement, MirrorOfTwoAxesKeepsTheSense) {
+  Frame f;
+  f.mirror = {true, true, false};
+  MotionBlock b = quarterArc();
+  b.frame = affineOf(f);
+  Segment s = place(b, CoordSystem::MCS);
+  EXPECT_EQ(s.motion, Motion::G2);
+  expectVec(s.end, 0, 10, 0);
+}
+
+TEST(Placement, RotationKeepsTheSenseAndTurnsTheNormal) {
+  Frame f;
+  f.rotation = {0, 0, 90};
+  MotionBlock b = quarterArc();
+  b.frame = affineOf(f);
+  Segment s = place(b, CoordSystem::MCS);
+  EXPECT_EQ(s.motion, Motion::G2);
+  expectVec(s.start, 0, 10, 0);
+  expectVec(s.end, 10, 0, 0);
+
+  // G18 arc (about Y) tipped by ROT X-90 turns about -Z: seen from +Z it is reversed.
+  MotionBlock g18;
+  g18.motion = Motion::G2;
+  g18.start = {10, 0, 0};
+  g18.end = {0, 0, 10};
+  g18.centre = {0, 0, 0};
+  g18.applicate = 1;
+  Frame tip;
+  tip.rotation = {-90, 0, 0};
+  g18.frame = affineOf(tip);
+  Segment t = place(g18, CoordSystem::MCS);
+  expectVec(t.normal, 0, 0, 1);
+  EXPECT_EQ(t.motion, Motion::G3);
+  expectVec(t.end, 0, 10, 0);
+
+  tip.rotation = {90, 0, 0};  // about +Z: same sense
+  g18.frame = affineOf(tip);
+  Segment u = place(g18, CoordSystem::MCS);
+  expectVec(u.normal, 0, 0, 1);
+  EXPECT_EQ(u.motion, Motion::G2);
+}
+
+TEST(Placement, LinesAreNeverSwapped) {
+  Frame f;
+  f.mirror = {true, false, false};
+  MotionBlock b;
+  b.motion = Motion::G1;
+  b.start = {0, 0, 0};
+  b.end = {5, 5, 0};
+  b.frame = affineOf(f);
+  Segment s = place(b, CoordSystem::MCS);
+  EXPECT_EQ(s.motion, Motion::G1);
+  expectVec(s.end, -5, 5, 0);
+  b.motion = Motion::G0;
+  EXPECT_EQ(place(b, CoordSystem::MCS).motion, Motion::G0);
+}
+
+TEST(Placement, WcsModeLeavesPointsAndSense) {
+  Frame f;
+  f.coarse = {100, 0, 0};
+  f.mirror = {true, false, false};
+  MotionBlock b = quarterArc();
+  b.frame = affineOf(f);
+  b.tool_offset = {0, 0, 30};
+  Segment s = place(b, CoordSystem::WCS);
+  EXPECT_EQ(s.motion, Motion::G2);
+  expectVec(s.start, 10, 0, 0);
+  expectVec(s.end, 0, -10, 0);
+  expectVec(s.centre, 0, 0, 0);
+  expectVec(s.normal, 0, 0, 1);
+  EXPECT_EQ(s.line, 12);
+  EXPECT_EQ(s.feed, 200);
+}
+
+TEST(Placement, TurnsArePassedOn) {
+  MotionBlock b = quarterArc(Motion::G3);
+  b.turns = 3;
+  EXPECT_EQ(place(b, CoordSystem::MCS).turns, 3);
+  EXPECT_EQ(place(b, CoordSystem::WCS).turns, 3);
+}
+
+}  // namespace
+}  // namespace ncoffset::place
