@@ -155,7 +155,7 @@ void Interpreter::collectWord(const Stmt& st) {
     double d = value();
     if (d < 0 || d > 100 || d != std::floor(d))
       raise(alarm_no::kValueRange, fmt::format("value range exceeded: DISC={} (0..100)", d));
-    modal_.disc = std::fmin(d, data_.get("$MC_CUTCOM_MAX_DISC"));
+    modal_.disc = std::fmin(d, data_.get(md_max_disc_));
     return;
   }
   if (name == "OFFN") { modal_.offn = toMm(value()); return; }
@@ -328,7 +328,7 @@ void Interpreter::doMotion() {
   m.frame = frame;
   m.line = line_;
   m.file = file_;
-  m.start = frame.inverse().apply(bcs_);
+  m.start = suppress ? bcs_ : act_inverse_.apply(bcs_);
   m.end = target;
   if (m.motion != Motion::G0) {
     if (modal_.feed <= 0)
@@ -354,8 +354,8 @@ void Interpreter::doMotion() {
     geom::ArcRequest req;
     req.start = {from[pa.abscissa], from[pa.ordinate]};
     req.ccw = m.motion == Motion::G3;
-    req.tol_const = data_.get("$MC_CIRCLE_ERROR_CONST");
-    req.tol_factor = data_.get("$MC_CIRCLE_ERROR_FACTOR");
+    req.tol_const = data_.get(md_circle_const_);
+    req.tol_factor = data_.get(md_circle_factor_);
     if (words_.axis[pa.abscissa] || words_.axis[pa.ordinate])
       req.end = geom::Vec2{target[pa.abscissa], target[pa.ordinate]};
     if (words_.centre[pa.abscissa] || words_.centre[pa.ordinate]) {
@@ -385,13 +385,13 @@ void Interpreter::doMotion() {
     Vec3 d = target - from;
     if (std::fabs(d.x) < 1e-12 && std::fabs(d.y) < 1e-12 && std::fabs(d.z) < 1e-12 &&
         norm(frame.apply(target) - bcs_) < 1e-12) {
-      wcs_ = suppress ? act_.inverse().apply(bcs_) : target;
+      wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
       return;  // zero-length block: no segment
     }
   }
   placement_.motion(m);
   bcs_ = frame.apply(target);
-  wcs_ = suppress ? act_.inverse().apply(bcs_) : target;
+  wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
 }
 
 void Interpreter::doFrameCommand() {
@@ -451,6 +451,9 @@ void Interpreter::doFrameCommand() {
     if (words_.axis[i]) pframe_.addMirror(i);
 }
 
-void Interpreter::updateActiveFrame() { act_ = ncoffset::chain(iframe_, pframe_).affine(); }
+void Interpreter::updateActiveFrame() {
+  act_ = ncoffset::chain(iframe_, pframe_).affine();
+  act_inverse_ = act_.inverse();
+}
 
 }  // namespace ncoffset::interp

@@ -25,6 +25,9 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
       eval_(*this),
       uifr_(100) {
   r_.assign(static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM")), 0.0);
+  md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
+  md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
+  md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
   r_written_.assign(r_.size(), false);
   updateActiveFrame();
 }

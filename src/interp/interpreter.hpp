@@ -138,6 +138,9 @@ class Interpreter final : public lang::Environment {
   Frame iframe_;
   Frame pframe_;
   Affine act_;
+  Affine act_inverse_;
+  // Machine data read per block, looked up once.
+  int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
 
   // Positions: last programmed WCS point, and the current BCS point of the tool tip.
   Vec3 wcs_;
