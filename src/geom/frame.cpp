@@ -78,7 +78,11 @@ Affine Frame::affine() const {
 
 Frame chain(const Frame& a, const Frame& b) {
   Frame r = a;
-  r.addTranslation(b.coarse + b.fine);
+  // Coarse with coarse and fine with fine, each carried by a's rotation, scale and mirror
+  // (a TRANS never becomes a fine offset; PM-NC p315).
+  const Mat3 la = a.affine().linear;
+  r.coarse = a.coarse + la * b.coarse;
+  r.fine = a.fine + la * b.fine;
   if (b.rotation.x != 0 || b.rotation.y != 0 || b.rotation.z != 0) r.addRotation(b.rotationMatrix());
   r.addScale(b.scale);
   for (int i = 0; i < 3; ++i)
