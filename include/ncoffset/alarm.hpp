@@ -46,6 +46,8 @@ inline constexpr int kIllegalDef = 14500;
 inline constexpr int kArrayIndex1 = 17020;
 inline constexpr int kArrayIndex2 = 17030;
 inline constexpr int kSubprogramDepth = 14012;
+inline constexpr int kEdgeNotExisting = 17181;
+inline constexpr int kToolNotExisting = 17191;
 // ncoffset's own numbers: limits and constructs not modelled.
 inline constexpr int kLineTooLong = 99001;
 inline constexpr int kBlockLimit = 99002;

@@ -97,28 +97,34 @@ void Interpreter::collectWord(const Stmt& st) {
         double m = lang::toNumber(v, "M function");
         if (m < 0 || m != std::floor(m))
           raise(alarm_no::kValueRange, fmt::format("value range exceeded: M{}", m));
+        // M6 (MD22560) changes the tool for the master spindle (MD20090 = 1).
+        if (m == data_.get(md_change_m_) && st.ext <= 1) words_.tool_change = true;
         if (st.ext > 0) return;  // M2=3: function of spindle 2
         if (m == 2 || m == 30) words_.end_program = true;
         else if (m == 17) words_.end_subprogram = true;
         return;  // other M functions (M0, M1, M3..M5, M6, M8, ...) do not move the path
       }
       case 'T': {
+        if (st.ext >= 0) raise(alarm_no::kSyntaxError, "T takes no address extension");
         Value v = eval_.eval(block_, st.expr);
-        if (v.isText())
-          notModelled(fmt::format("T=\"{}\"", v.str), "tool data (T, D) arrive with the tool-offset stage");
+        if (v.isText()) {
+          words_.tool = resolveToolName(v.str);
+          return;
+        }
         double t = lang::toNumber(v, "T");
-        if (t < 0 || t != std::floor(t))
-          raise(alarm_no::kValueRange, fmt::format("value range exceeded: T{} (T numbers are whole, >= 0)", t));
-        if (t != 0) notModelled(fmt::format("T{}", t), "tool data (T, D) arrive with the tool-offset stage");
-        modal_.tool = 0;
+        if (t < 0 || t != std::floor(t) || t > tool::kMaxTool)
+          raise(alarm_no::kValueRange,
+                fmt::format("value range exceeded: T{} (T numbers are whole, 0..{})", t, tool::kMaxTool));
+        words_.tool = static_cast<int>(t);
         return;
       }
       case 'D': {
+        if (st.ext >= 0) raise(alarm_no::kSyntaxError, "D takes no address extension");
         double d = value();
-        if (d < 0 || d != std::floor(d))
-          raise(alarm_no::kValueRange, fmt::format("value range exceeded: D{} (D numbers are whole, >= 0)", d));
-        if (d != 0) notModelled(fmt::format("D{}", d), "tool data (T, D) arrive with the tool-offset stage");
-        modal_.edge = 0;
+        if (d < 0 || d != std::floor(d) || d > tool::kMaxEdge)
+          raise(alarm_no::kValueRange,
+                fmt::format("value range exceeded: D{} (D numbers are whole, 0..{})", d, tool::kMaxEdge));
+        words_.edge = static_cast<int>(d);
         return;
       }
       case 'L': {
@@ -279,6 +285,7 @@ void Interpreter::finishBlock() {
     axes_consumed = true;  // G25/G26 axis values are working-area limits, not targets
   }
   if (frames_changed) updateActiveFrame();
+  executeToolWords();
   if (words_.rpl && words_.frame_command.empty())
     raise(alarm_no::kSyntaxError, "RPL= only with ROT or AROT");
 
@@ -382,13 +389,21 @@ void Interpreter::doMotion() {
     m.applicate = pa.applicate;
     m.turns = words_.turn.value_or(0);
   } else {
-    Vec3 d = target - from;
-    if (std::fabs(d.x) < 1e-12 && std::fabs(d.y) < 1e-12 && std::fabs(d.z) < 1e-12 &&
-        norm(frame.apply(target) - bcs_) < 1e-12) {
+    // Tool length: each BCS axis takes up the length vector with the first linear block that
+    // moves it after the selection (W1 2.1, spec §2.6).
+    Vec3 full = toolOffset();
+    Vec3 before = applied_offset_;
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i)
+        if (words_.axis[i] && std::fabs(frame.linear.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
+          applied_offset_[k] = full[k];
+    Vec3 moved = (frame.apply(target) + applied_offset_) - (bcs_ + before);
+    if (std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12) {
       wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
       return;  // zero-length block: no segment
     }
   }
+  m.tool_offset = applied_offset_;
   placement_.motion(m);
   bcs_ = frame.apply(target);
   wcs_ = suppress ? act_inverse_.apply(bcs_) : target;

@@ -28,6 +28,15 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
   md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
   md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
+  md_change_mode_ = data_.find("$MC_TOOL_CHANGE_MODE");
+  md_change_m_ = data_.find("$MC_TOOL_CHANGE_M_CODE");
+  md_default_edge_ = data_.find("$MC_CUTTING_EDGE_DEFAULT");
+  sd_mirror_length_ = data_.find("$SC_MIRROR_TOOL_LENGTH");
+  sd_mirror_wear_ = data_.find("$SC_MIRROR_TOOL_WEAR");
+  sd_cutpos_ = data_.find("$SC_WEAR_SIGN_CUTPOS");
+  sd_wear_sign_ = data_.find("$SC_WEAR_SIGN");
+  sd_length_const_ = data_.find("$SC_TOOL_LENGTH_CONST");
+  sd_length_type_ = data_.find("$SC_TOOL_LENGTH_TYPE");
   r_written_.assign(r_.size(), false);
   updateActiveFrame();
 }

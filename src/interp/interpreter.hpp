@@ -21,6 +21,7 @@
 #include "ncoffset/channel.hpp"
 #include "ncoffset/frame.hpp"
 #include "place/placement.hpp"
+#include "tool/tool_store.hpp"
 
 namespace ncoffset::interp {
 
@@ -93,6 +94,18 @@ class Interpreter final : public lang::Environment {
   Vec3 bcsOfWcs(Vec3 wcs) const;
   double toMm(double v) const;
 
+  // --- tool data and selection (tool_selection.cpp) ---
+  void executeToolWords();
+  void changeTool(int t, bool edge_programmed);
+  void selectEdge(int d);
+  Vec3 toolOffset() const;
+  bool readTool(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                lang::Value& out);
+  bool writeTool(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                 const lang::Value& v);
+  lang::Value callLentoax(std::span<const lang::Value> args);
+  int resolveToolName(const std::string& name);
+
   // --- system variables and frame functions (system_variables.cpp) ---
   bool readSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                   lang::Value& out);
@@ -141,6 +154,24 @@ class Interpreter final : public lang::Environment {
   Affine act_inverse_;
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
+
+  // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection
+  // snapshotted (data, setting data and mirroring act from the next edge selection).
+  tool::ToolStore tools_;
+  size_t tool_edges_ = 0;
+  int active_tool_ = 0;
+  int active_edge_ = 0;
+  int preselected_tool_ = -1;
+  struct EdgeSnapshot {
+    bool valid = false;
+    EdgeData data;
+    ToolSettings settings;
+    std::array<bool, 3> mirrored{false, false, false};
+  } edge_;
+  Vec3 applied_offset_;  // BCS length vector as taken up axis by axis by linear blocks
+  int md_change_mode_ = 0, md_change_m_ = 0, md_default_edge_ = 0;
+  int sd_mirror_length_ = 0, sd_mirror_wear_ = 0, sd_cutpos_ = 0, sd_wear_sign_ = 0,
+      sd_length_const_ = 0, sd_length_type_ = 0;
 
   // Positions: last programmed WCS point, and the current BCS point of the tool tip.
   Vec3 wcs_;

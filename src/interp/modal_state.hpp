@@ -61,6 +61,9 @@ struct BlockWords {
   std::optional<double> f;
   bool end_program = false;   // M2 / M30
   bool end_subprogram = false;  // M17 / RET
+  std::optional<int> tool;    // T (number; a T="name" is resolved when collected)
+  std::optional<int> edge;    // D
+  bool tool_change = false;   // M6 (MD22560) for the master spindle
   std::string call;           // subprogram to call at block end
   std::optional<long long> repeat;  // P
   int column = 0;

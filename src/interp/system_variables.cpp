@@ -79,6 +79,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     return true;
   }
   if (name.empty() || name[0] != '$') return false;
+  if (readTool(name, idx, indexed, out)) return true;
   if (name == "$P_UIFRNUM") {
     int f = modal_.frame_select;
     out = Value::integer(f == 500 ? 0 : f < 100 ? f - 53 : f - 500);
@@ -128,6 +129,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     }
     return;
   }
+  if (writeTool(name, idx, indexed, v)) return;
   if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
     raise(alarm_no::kNameNotDefined, fmt::format("{} can only be read", name));
   bool whole;
@@ -200,9 +202,10 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
             fmt::format("CHANDATA({}): ncoffset models one channel (CHANDATA(1))", ch));
     return Value::empty();
   }
-  if (name == "LENTOAX" || name == "GETTCOR" || name == "SETTCOR")
+  if (name == "LENTOAX") return callLentoax(args);
+  if (name == "GETTCOR" || name == "SETTCOR")
     raise(alarm_no::kNotModelled,
-          fmt::format("{} is not modelled by ncoffset yet: it arrives with the tool-offset stage", name));
+          fmt::format("{} (tool environments) is not modelled by ncoffset", name));
   if (programExists(name))
     raise(alarm_no::kNotModelled,
           fmt::format("subprogram call {}(...) with parameters is not modelled by ncoffset", name));
