@@ -650,6 +650,16 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
     first = false;
   }
   out << '}';
+  // The active tool as the $P_TOOL.. system variables show it (docs/tool-offsets.md).
+  EffectiveLengths l = edge_.valid ? effectiveLengths(edge_.data, edge_.settings) : EffectiveLengths{};
+  Vec3 o;
+  if (edge_.valid) o = toolOrientation(edge_.data, edge_.settings, modal_.plane, edge_.mirrored);
+  else o[planeAxes(modal_.plane).applicate] = 1;
+  Vec3 len = toolOffset();
+  out << fmt::format(", \"$P_TOOLNO\": {}, \"$P_TOOL\": {}, \"$P_TOOLL\": [{},{},{}], \"$P_TOOLR\": {}, "
+                     "\"$P_TOOLO\": [{},{},{}], \"$TOOL_LENGTH_BCS\": [{},{},{}]",
+                     active_tool_, active_edge_, l.total[0], l.total[1], l.total[2], l.radius,
+                     o.x + 0.0, o.y + 0.0, o.z + 0.0, len.x + 0.0, len.y + 0.0, len.z + 0.0);
   std::map<std::string, const UserVariable*> sorted;
   for (const auto& [k, v] : globals_) sorted[k] = &v;
   const VariableMap& main = levels_.empty() ? main_vars_ : levels_.front().locals;
