@@ -7,5 +7,7 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build
 mkdir -p out
 ./build/ncoffset --init examples/frames.INI -o out/frames.csv examples/frames.MPF
-echo "wrote out/frames.csv:"
-cat out/frames.csv
+./build/ncoffset --init examples/tools.INI --vars out/lentoax.json -o out/lentoax.csv \
+  examples/lentoax.MPF
+echo "wrote out/frames.csv and out/lentoax.csv:"
+cat out/frames.csv out/lentoax.csv
