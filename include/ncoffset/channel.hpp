@@ -22,6 +22,7 @@ struct Limits {
   int max_control_depth = 16;            // nested control structures per program level
   size_t max_variables = 10000;          // user variables (DEF) alive at once
   size_t max_array_elements = 1000000;   // elements of one array
+  size_t max_total_elements = 4000000;   // elements of all live arrays together
   size_t max_tool_edges = 32000;         // cutting edges in the tool offset memory
 };
 

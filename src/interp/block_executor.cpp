@@ -86,7 +86,7 @@ void Interpreter::collectWord(const Stmt& st) {
       }
       case 'F': {
         double f = value();
-        if (f < 0) raise(alarm_no::kValueRange, fmt::format("value range exceeded: F{}", f));
+        if (f < 0 || f > 1e9) raise(alarm_no::kValueRange, fmt::format("value range exceeded: F{}", f));
         words_.f = f;
         return;
       }
@@ -129,8 +129,8 @@ void Interpreter::collectWord(const Stmt& st) {
       }
       case 'L': {
         double l = value();
-        if (l < 0 || l != std::floor(l) || st.has_equals)
-          raise(alarm_no::kSyntaxError, "L must be followed by a program number");
+        if (l < 0 || l != std::floor(l) || l > 999999999 || st.has_equals)
+          raise(alarm_no::kSyntaxError, "L must be followed by a program number (0..999999999)");
         words_.call = fmt::format("L{}", static_cast<long long>(l));
         return;
       }
@@ -404,6 +404,16 @@ void Interpreter::doMotion() {
     }
   }
   m.tool_offset = applied_offset_;
+  // Computed geometry must stay finite and within the machine's number range: a frame with a
+  // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
+  Vec3 checks[] = {frame.apply(m.end) + applied_offset_, frame.apply(m.centre)};
+  for (const Vec3& p : checks)
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(p[i]))
+        raise(alarm_no::kArithmetic, "arithmetic error in part program: position is not a finite number");
+      else if (std::fabs(p[i]) > 1e9)
+        raise(alarm_no::kValueRange,
+              fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i], "XYZ"[i]));
   placement_.motion(m);
   bcs_ = frame.apply(target);
   wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
@@ -428,6 +438,9 @@ void Interpreter::doFrameCommand() {
     return;
   }
   if (cmd == "ROT" || cmd == "AROT") {
+    for (double a : {v.x, v.y, v.z, words_.rpl.value_or(0.0)})
+      if (!(std::fabs(a) <= 1e6))
+        raise(alarm_no::kValueRange, fmt::format("value range exceeded: rotation angle {}", a));
     Mat3 r;
     if (words_.rpl) {
       if (words_.axis[0] || words_.axis[1] || words_.axis[2])
@@ -448,7 +461,7 @@ void Interpreter::doFrameCommand() {
     Vec3 s{1, 1, 1};
     for (int i = 0; i < 3; ++i) {
       if (!words_.axis[i]) continue;
-      if (std::fabs(v[i]) < 1e-12 || !std::isfinite(v[i]))
+      if (std::fabs(v[i]) < 1e-12 || !(std::fabs(v[i]) <= 1e6))
         raise(alarm_no::kValueRange, fmt::format("value range exceeded: scale factor {} of {}", v[i], "XYZ"[i]));
       s[i] = v[i];
     }

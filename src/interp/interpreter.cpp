@@ -95,7 +95,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
                         text.size(), max_len));
     if (!text.empty() && text.front() == '%') continue;  // archive header %_N_NAME_MPF
     lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
-    executeBlock();
+    try {
+      executeBlock();
+    } catch (const std::bad_alloc&) {
+      raise(alarm_no::kArrayTooLarge, "out of memory while executing this block");
+    }
   }
   if (!init_file) main_vars_ = std::move(levels_.front().locals);
   levels_.clear();
@@ -366,6 +370,7 @@ void Interpreter::endProgram() { ended_ = true; }
 void Interpreter::returnFromSubprogram() {
   ProgramLevel& lvl = levels_.back();
   variable_count_ -= std::min(variable_count_, lvl.locals.size());
+  for (const auto& [name, var] : lvl.locals) element_count_ -= std::min(element_count_, var.data.size());
   if (lvl.repeat_left > 0) {
     --lvl.repeat_left;
     lvl.locals.clear();
@@ -452,10 +457,13 @@ void Interpreter::define(const lang::Decl& d) {
   size_t count = 1;
   if (d.dims[0] > 0) {
     count = static_cast<size_t>(d.dims[0]) * static_cast<size_t>(d.dims[1] > 0 ? d.dims[1] : 1);
-    if (count > options_.limits.max_array_elements)
+    if (count > options_.limits.max_array_elements ||
+        element_count_ + count > options_.limits.max_total_elements)
       raise(alarm_no::kArrayTooLarge,
-            fmt::format("array {} has {} elements, more than the limit of {} (--max-array-elements)",
-                        name, count, options_.limits.max_array_elements));
+            fmt::format("array {} has {} elements: more than {} in one array (--max-array-elements) "
+                        "or {} in all (--max-total-elements)",
+                        name, count, options_.limits.max_array_elements,
+                        options_.limits.max_total_elements));
   }
   v.data.assign(count, initialValue(d.type));
   if (d.init >= 0) {
@@ -476,6 +484,7 @@ void Interpreter::define(const lang::Decl& d) {
             d.string_length, name);
     }
   }
+  element_count_ += count;
   lvl.locals.emplace(std::move(name), std::move(v));
   ++variable_count_;
 }

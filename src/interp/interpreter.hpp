@@ -133,6 +133,7 @@ class Interpreter final : public lang::Environment {
   VariableMap globals_;
   VariableMap main_vars_;  // the main program's variables after it ended (for --vars)
   size_t variable_count_ = 0;
+  size_t element_count_ = 0;  // array elements of all live variables
   std::vector<double> r_;
   std::vector<bool> r_written_;
 

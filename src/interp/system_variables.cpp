@@ -147,6 +147,8 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     int ax = axisOf(idx[base]);
     std::string comp = lang::toText(idx[base + 1]);
     double x = lang::toNumber(v, "frame component");
+    if (!(std::fabs(x) <= 1e9) || ((comp == "RT" || comp == "SC") && !(std::fabs(x) <= 1e6)))
+      raise(alarm_no::kValueRange, fmt::format("value range exceeded: {}[..,{}] = {}", name, comp, x));
     if (comp == "MI") {
       f->mirror[static_cast<size_t>(ax)] = x != 0;
     } else {

@@ -60,7 +60,11 @@ Value convertForStore(const Value& v, VarType t, int string_length, std::string_
       if (!v.isNumeric()) return mismatch();
       return Value::boolean(v.num != 0);
     case VarType::Char:
-      if (v.isNumeric()) return {Type::Char, lang::roundToInt(v.num), {}, {}};
+      if (v.isNumeric()) {
+        if (!(v.num >= 0 && v.num <= 255))
+          raise(alarm_no::kValueRange, fmt::format("value range exceeded: {} does not fit CHAR {} (0..255)", v.num, name));
+        return {Type::Char, lang::roundToInt(v.num), {}, {}};
+      }
       if (v.type == Type::String && v.str.size() == 1)
         return {Type::Char, static_cast<double>(static_cast<unsigned char>(v.str[0])), {}, {}};
       return mismatch();

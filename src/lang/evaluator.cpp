@@ -25,6 +25,14 @@ Value numeric(Type t, double v, const char* what) {
   return {t, v, {}, {}};
 }
 
+// Bit operations work on 32-bit integers: larger values are out of range (never a cast of an
+// unrepresentable double).
+int64_t bitOperand(double v) {
+  if (!(std::fabs(v) <= 4294967295.0))
+    raise(alarm_no::kValueRange, fmt::format("value range exceeded: {} in a bit operation", v));
+  return static_cast<int64_t>(std::round(v));
+}
+
 }  // namespace
 
 const char* typeName(Type t) {
@@ -148,7 +156,7 @@ Value Evaluator::eval(const Block& b, int n) {
         case Op::Plus: return numeric(v.type == Type::Int ? Type::Int : Type::Real, toNumber(v), "+");
         case Op::Not: return Value::boolean(!toBool(v));
         case Op::BNot:
-          return Value::integer(static_cast<double>(~static_cast<int32_t>(roundToInt(toNumber(v)))));
+          return Value::integer(static_cast<double>(~static_cast<int32_t>(bitOperand(toNumber(v)))));
         default: break;
       }
       raise(alarm_no::kSyntaxError, "bad unary operator");
@@ -196,7 +204,7 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
     case Op::BAnd:
     case Op::BOr:
     case Op::BXor: {
-      auto x = static_cast<int64_t>(roundToInt(a)), y = static_cast<int64_t>(roundToInt(c));
+      int64_t x = bitOperand(a), y = bitOperand(c);
       int64_t z = op == Op::BAnd ? (x & y) : op == Op::BOr ? (x | y) : (x ^ y);
       return Value::integer(static_cast<double>(z));
     }

@@ -57,6 +57,7 @@ class Parser {
       size_t j = i_;
       while (j < s_.size() && isIdentChar(s_[j])) ++j;
       if (j < s_.size() && s_[j] == ':' && j - i_ >= 2) {
+        if (j - i_ > 32) syntax("labels have at most 32 characters");
         b_.label = std::string_view(s_).substr(i_, j - i_);
         i_ = j + 1;
       }
@@ -146,6 +147,7 @@ class Parser {
     }
     size_t len = static_cast<size_t>(p - begin);
     if (len == 0 || (len == 1 && *begin == '.')) syntax("number expected");
+    if (len > 21) syntax("number with too many digits (at most 20)");
     double v;
     static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                         1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
@@ -631,6 +633,8 @@ class Parser {
       st.jump = j;
       st.target = jumpTarget();
       b_.stmts.push_back(st);
+      skipSpaces();
+      if (i_ < s_.size()) syntax("nothing may follow the jump destination in its block");
       return;
     }
     if (kw == "FOR") {
@@ -767,6 +771,7 @@ class Parser {
       d.string_length = string_length;
       d.column = column();
       d.name = ident();
+      if (d.name.size() > 32) syntax("variable names have at most 32 characters");
       skipSpaces();
       if (peek() == '[') {
         ++i_;

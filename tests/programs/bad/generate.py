@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""Regenerates the cases of tests/programs/bad/ whose bytes are awkward to type: very long
+lines, NUL/control/non-ASCII bytes, CRLF mixes, a missing final newline, binary garbage.
+Run from anywhere: python3 tests/programs/bad/generate.py  (output is deterministic)."""
+import os
+import random
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def write(name, data):
+    if isinstance(data, str):
+        data = data.encode("ascii")
+    with open(os.path.join(HERE, name), "wb") as f:
+        f.write(data)
+
+
+# About 1 MB in one block (default --max-line-length 65536): alarm 99001 at line 5.
+write("line_1mb.MPF",
+      "; Checks: a single block of about 1 MB (R1=1+1+...). Longer than the default\n"
+      "; --max-line-length 65536: alarm 99001 at line 5, without reading it all into an\n"
+      "; expression. Row: line 4 X1. Line 6 never runs. Status 2.\n"
+      "G90 G1 X1 F100\n" + "R1=1" + "+1" * 524286 + "\n" + "G1 X2\nM30\n")
+
+# About 2 KB in one block against --max-line-length 1000 (stands in for a 10 MB line).
+write("line_length_limit.MPF",
+      "; Checks: --max-line-length 1000 and a block of about 2 KB (stand-in for a 10 MB line,\n"
+      "; which is too big to commit): alarm 99001 at line 5. Row: line 4 X1. Status 2.\n"
+      ";\n"
+      "G90 G1 X1 F100\n" + "R1=1" + "+1" * 1000 + "\n" + "G1 X2\nM30\n")
+
+# 200 nested parentheses (default --max-expression-depth 64): alarm 99003.
+write("parens_200.MPF",
+      "; Checks: an expression nested 200 parentheses deep: alarm 99003 (limit 64) at line 4,\n"
+      "; no stack overflow. Row: line 3 X1. Status 2.\n"
+      "G90 G1 X1 F100\n" + "R1=" + "(" * 200 + "1" + ")" * 200 + "\n" + "G1 X2\nM30\n")
+
+# 200 nested function calls.
+write("function_nest_200.MPF",
+      "; Checks: 200 nested function calls SIN(SIN(...)): alarm 99003 at line 4, no stack\n"
+      "; overflow. Row: line 3 X1. Status 2.\n"
+      "G90 G1 X1 F100\n" + "R1=" + "SIN(" * 200 + "1" + ")" * 200 + "\n" + "G1 X2\nM30\n")
+
+# 30000 unary minus signs: recursion without parentheses.
+write("unary_minus_chain.MPF",
+      "; Checks: 30000 unary minus signs in a row (R1=---...1): the parser must count them as\n"
+      "; nesting (alarm 99003 at line 5) instead of recursing until the stack overflows.\n"
+      "; Row: line 4 X1. Status 2.\n"
+      "G90 G1 X1 F100\n" + "R1=" + "-" * 30000 + "1\n" + "G1 X2\nM30\n")
+
+# 10000 NOT operators.
+write("not_chain.MPF",
+      "; Checks: 10000 NOT operators in a row: alarm 99003 at line 4, no stack overflow.\n"
+      "; Row: line 3 X1. Status 2.\n"
+      "G90 G1 X1 F100\n" + "R1=" + "NOT " * 10000 + "1\n" + "G1 X2\nM30\n")
+
+# 20 nested IF: the 17th (line 21) exceeds the 16 control structures of one level.
+lines = ["; Checks: 20 nested IF structures. 16 per program level are allowed; the 17th IF (line 21)",
+         "; raises 12641 in the load-time pre-scan, so nothing runs (no rows) although line 4 moves.",
+         "; Lines 5..24 hold IF 1..20, closed by 20 ENDIF.",
+         "G90 G1 X1 F100"]
+lines += ["  " * i + "IF R1==0" for i in range(20)]
+lines += ["  " * 20 + "G1 X2"]
+lines += ["  " * i + "ENDIF" for i in reversed(range(20))]
+lines += ["M30"]
+write("if_nested_20.MPF", "\n".join(lines) + "\n")
+
+# NUL byte inside a block.
+write("nul_byte.MPF",
+      b"; Checks: a NUL byte (0x00) inside a block, between 'X' and '2' on line 5: alarm 99011\n"
+      b"; (byte not allowed outside comments and strings) at line 5; the NUL in the comment of\n"
+      b"; line 4 is allowed. Row: line 4 X1. Status 2.\n"
+      b"G90 G1 X1 F100 ; comment with \x00 NUL is fine\n"
+      b"G1 X\x002\n"
+      b"G1 X3\nM30\n")
+
+# Control character (0x07 BEL, 0x1B ESC) inside a block.
+write("control_char.MPF",
+      b"; Checks: a control character (0x1B ESC) inside a block on line 4: alarm 99011 at line 4.\n"
+      b"; Row: line 3 X1. Status 2.\n"
+      b"G90 G1 X1 F100\n"
+      b"G1 X2 \x1b[31m\n"
+      b"G1 X3\nM30\n")
+
+# Non-ASCII byte (Latin-1 micro sign) outside a comment.
+write("non_ascii_byte.MPF",
+      b"; Checks: a non-ASCII byte (0xB5, Latin-1 micro sign) outside a comment on line 5:\n"
+      b"; alarm 99011 at line 5. In the comment of line 4 the same byte is allowed.\n"
+      b"; Row: line 4 X1. Status 2.\n"
+      b"G90 G1 X1 F100 ; 5 \xb5m is fine here\n"
+      b"G1 X2 \xb5\n"
+      b"G1 X3\nM30\n")
+
+# UTF-8 text outside a comment.
+write("utf8_outside_comment.MPF",
+      "; Checks: UTF-8 text outside a comment: a variable name with a German umlaut on line 5\n"
+      "; (first byte 0xC3) raises 99011 at line 5. UTF-8 in the comment of line 4 is allowed.\n"
+      "; Row: line 4 X1. Status 2.\n"
+      "G90 G1 X1 F100 ; Fräsen: Maß prüfen\n"
+      "MAß=1\n"
+      "G1 X3\nM30\n".encode("utf-8"))
+
+# CRLF mixed with LF.
+write("crlf_mixed.MPF",
+      b"; Checks: CRLF and LF line ends mixed in one file. Both end a line; the line numbers\r\n"
+      b"; count each ending once. Expected: no alarm; rows on lines 4, 5, 6, 7 (X1..X4).\n"
+      b"; (Lines 1, 4 and 6 end with CRLF, the others with LF.)\r\n"
+      b"G90 G1 X1 F100\r\n"
+      b"G1 X2\n"
+      b"G1 X3\r\n"
+      b"G1 X4\n"
+      b"M30\n")
+
+# Last line without a newline: it still runs.
+write("no_final_newline.MPF",
+      b"; Checks: the last line has no newline at the end of the file; it is still a block and\n"
+      b"; runs. Expected: rows line 3 X1, line 4 X2; no alarm.\n"
+      b"G90 G1 X1 F100\n"
+      b"G1 X2")
+
+# An empty file: valid, no motion.
+write("empty.MPF", b"")
+
+# Binary garbage, deterministic. The first byte is forced to 0xFF so the first line is bad at
+# column 1 whatever the generator yields.
+rng = random.Random(20240611)
+garbage = bytes([0xFF]) + bytes(rng.randrange(256) for _ in range(4095))
+write("binary_garbage.MPF", garbage)
+
+# A subprogram of binary garbage, called by sub_garbage.MPF.
+rng = random.Random(7)
+write("GARBAGE_SUB.SPF", bytes([0x80]) + bytes(rng.randrange(256) for _ in range(1023)))
