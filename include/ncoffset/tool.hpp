@@ -68,6 +68,11 @@ Vec3 lengthVector(const EdgeData& e, const ToolSettings& s, Plane plane,
 Vec3 toolOrientation(const EdgeData& e, const ToolSettings& s, Plane plane,
                      const std::array<bool, 3>& mirrored);
 
+// Spec §7: the theoretical tool tip P relative to the cutting edge centre S for cutting edge
+// position SL 1..9 ($TC_DP2) of a turning tool with nose radius r, as components along the
+// axes of L1 and L2 (X and Z in G18 with the standard assignment). SL 9 and 0: P = S.
+std::array<double, 2> tipFromEdgeCentre(int sl, double r);
+
 // LENTOAX (W1 2.11, details §1): _AXIND and _MATRIX for the active edge in the coordinate
 // system `coord` (M/B/W/K/T). `frame_linear` is the linear part of WCS -> BCS.
 struct LentoaxResult {

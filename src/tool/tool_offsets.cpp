@@ -93,6 +93,14 @@ Vec3 toolOrientation(const EdgeData& e, const ToolSettings& s, Plane plane,
   return n > 0 ? (1.0 / n) * o : o;
 }
 
+std::array<double, 2> tipFromEdgeCentre(int sl, double r) {
+  // P - S in (L1 axis, L2 axis): 1 (+,+) 2 (+,-) 3 (-,-) 4 (-,+) 5 (0,+) 6 (+,0) 7 (0,-) 8 (-,0).
+  static constexpr int kDir[10][2] = {{0, 0},  {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
+                                      {0, 1},  {1, 0}, {0, -1}, {-1, 0},  {0, 0}};
+  if (sl < 0 || sl > 9) return {0, 0};
+  return {kDir[sl][0] * r, kDir[sl][1] * r};
+}
+
 LentoaxResult lentoax(const EdgeData& e, const ToolSettings& s, Plane plane,
                       const std::array<bool, 3>& mirrored, const Mat3& frame_linear,
                       const std::string& coord_in) {

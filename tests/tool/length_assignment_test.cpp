@@ -210,3 +210,34 @@ TEST(EffectiveLengths, RadiusAndWearSign) {
 
 }  // namespace
 }  // namespace ncoffset
+
+namespace ncoffset {
+namespace {
+
+TEST(CuttingEdgePosition, TipFromCentreTable) {
+  // Spec §7 table, r = 0.8.
+  const double want[10][2] = {{0, 0},     {.8, .8}, {.8, -.8}, {-.8, -.8}, {-.8, .8},
+                              {0, .8},    {.8, 0},  {0, -.8},  {-.8, 0},   {0, 0}};
+  for (int sl = 0; sl <= 9; ++sl) {
+    auto p = tipFromEdgeCentre(sl, 0.8);
+    EXPECT_DOUBLE_EQ(p[0], want[sl][0]) << "SL " << sl;
+    EXPECT_DOUBLE_EQ(p[1], want[sl][1]) << "SL " << sl;
+  }
+  // Consistent with SD42920: wear L1 inverted exactly where P-S is negative along L1.
+  for (int sl = 1; sl <= 9; ++sl) {
+    EdgeData e;
+    e.dp[1] = 500;
+    e.dp[2] = sl;
+    e.dp[12] = 1;
+    e.dp[13] = 1;
+    ToolSettings s;
+    s.wear_sign_cutpos = true;
+    EffectiveLengths l = effectiveLengths(e, s);
+    auto p = tipFromEdgeCentre(sl, 1);
+    EXPECT_EQ(l.wear[0] < 0, p[0] < 0) << "SL " << sl;
+    EXPECT_EQ(l.wear[1] < 0, p[1] < 0) << "SL " << sl;
+  }
+}
+
+}  // namespace
+}  // namespace ncoffset
