@@ -44,7 +44,7 @@ double Interpreter::toMm(double v) const {
 
 void Interpreter::collectWord(const Stmt& st) {
   std::string_view name = st.name;
-  auto value = [&]() { return eval_.number(block_, st.expr); };
+  auto value = [&]() { return st.literal ? st.literal_value : eval_.number(block_, st.expr); };
   if (st.has_equals && st.mode == AxisMode::Default && findVariable(name)) {
     // A user variable with a one-letter name (DEF REAL V): V=2 is an assignment.
     lang::Node target;
@@ -93,8 +93,7 @@ void Interpreter::collectWord(const Stmt& st) {
       case 'S':
       case 'H': value(); return;  // spindle speed, auxiliary function: no path effect
       case 'M': {
-        Value v = eval_.eval(block_, st.expr);
-        double m = lang::toNumber(v, "M function");
+        double m = value();
         if (m < 0 || m != std::floor(m))
           raise(alarm_no::kValueRange, fmt::format("value range exceeded: M{}", m));
         // M6 (MD22560) changes the tool for the master spindle (MD20090 = 1).
@@ -106,12 +105,14 @@ void Interpreter::collectWord(const Stmt& st) {
       }
       case 'T': {
         if (st.ext >= 0) raise(alarm_no::kSyntaxError, "T takes no address extension");
-        Value v = eval_.eval(block_, st.expr);
-        if (v.isText()) {
-          words_.tool = resolveToolName(v.str);
-          return;
+        if (!st.literal) {
+          Value v = eval_.eval(block_, st.expr);
+          if (v.isText()) {
+            words_.tool = resolveToolName(v.str);
+            return;
+          }
         }
-        double t = lang::toNumber(v, "T");
+        double t = value();
         if (t < 0 || t != std::floor(t) || t > tool::kMaxTool)
           raise(alarm_no::kValueRange,
                 fmt::format("value range exceeded: T{} (T numbers are whole, 0..{})", t, tool::kMaxTool));
@@ -131,7 +132,8 @@ void Interpreter::collectWord(const Stmt& st) {
         double l = value();
         if (l < 0 || l != std::floor(l) || l > 999999999 || st.has_equals)
           raise(alarm_no::kSyntaxError, "L must be followed by a program number (0..999999999)");
-        words_.call = fmt::format("L{}", static_cast<long long>(l));
+        call_name_ = fmt::format("L{}", static_cast<long long>(l));
+        words_.call = call_name_;
         return;
       }
       case 'P': {
@@ -243,7 +245,7 @@ void Interpreter::namedWord(const Stmt& st) {
   if (isOneOf(w, {"TRANS", "ATRANS", "ROT", "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR"})) {
     if (!words_.frame_command.empty())
       raise(alarm_no::kSyntaxError, "each frame statement must stand in its own block");
-    words_.frame_command = std::string(w);
+    words_.frame_command = w;
     return;
   }
   if (isOneOf(w, {"STOPRE", "BRISK", "SOFT", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN",
@@ -254,7 +256,7 @@ void Interpreter::namedWord(const Stmt& st) {
                   "TRAORI", "TRANSMIT", "TRACYL", "TRAANG", "ROTS", "AROTS", "CROTS", "MOVT",
                   "INVCW", "INVCCW", "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL", "PCALL", "MCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
-  words_.call = std::string(w);
+  words_.call = w;
 }
 
 Vec3 Interpreter::bcsOfWcs(Vec3 wcs) const { return act_.apply(wcs); }
@@ -420,7 +422,7 @@ void Interpreter::doMotion() {
 }
 
 void Interpreter::doFrameCommand() {
-  const std::string& cmd = words_.frame_command;
+  const std::string_view cmd = words_.frame_command;
   bool any = words_.axis[0] || words_.axis[1] || words_.axis[2] || words_.rpl;
   Vec3 v;
   for (int i = 0; i < 3; ++i)

@@ -85,6 +85,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
       }
       break;
     }
+    if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
     if (++executed_ > options_.limits.max_blocks)
       raise(alarm_no::kBlockLimit,
             fmt::format("limit of {} executed blocks reached (endless loop?); raise --max-blocks",

@@ -122,6 +122,7 @@ class Interpreter final : public lang::Environment {
   MachineData data_;
   ModalState modal_;
   BlockWords words_;
+  std::string call_name_;  // storage for an L<number> program name
 
   std::vector<std::unique_ptr<LoadedProgram>> files_;
   std::map<std::string, LoadedProgram*> by_name_;  // upper-case program name -> program

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "lang/block.hpp"
 #include "ncoffset/geometry.hpp"
@@ -57,14 +58,14 @@ struct BlockWords {
   int suppress_frames = 0;    // 53, 153 or 1 (SUPA)
   bool frame_select = false;  // G500/G54.. in this block
   int axial_offset = 0;       // 58 / 59
-  std::string frame_command;  // TRANS, ATRANS, ROT, ...
+  std::string_view frame_command;  // TRANS, ATRANS, ROT, ... (views the block's text)
   std::optional<double> f;
   bool end_program = false;   // M2 / M30
   bool end_subprogram = false;  // M17 / RET
   std::optional<int> tool;    // T (number; a T="name" is resolved when collected)
   std::optional<int> edge;    // D
   bool tool_change = false;   // M6 (MD22560) for the master spindle
-  std::string call;           // subprogram to call at block end
+  std::string_view call;      // subprogram to call at block end (block text or call_name_)
   std::optional<long long> repeat;  // P
   int column = 0;
 

@@ -62,6 +62,9 @@ struct Stmt {
   int jump = 0;           // CaseArm / IF: 1 GOTOF, 2 GOTOB, 3 GOTO, 4 GOTOC
   AxisMode mode = AxisMode::Default;
   bool has_equals = false;
+  bool literal = false;   // Word with a plain number (X10): value in literal_value, expr = -1
+  bool literal_int = false;
+  double literal_value = 0;
   int column = 0;         // 1-based column of the statement
 };
 

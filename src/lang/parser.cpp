@@ -121,6 +121,16 @@ class Parser {
 
   // Unsigned decimal literal with optional EX exponent (PM-NC: 1.5EX3 = 1500).
   int number(bool negative) {
+    bool is_int;
+    double v = scanNumber(is_int);
+    Node n;
+    n.kind = NodeKind::Number;
+    n.number = negative ? -v : v;
+    n.is_int = is_int;
+    return addNode(n);
+  }
+
+  double scanNumber(bool& is_int_out) {
     const char* const begin = s_.data() + i_;
     const char* const end = s_.data() + s_.size();
     const char* p = begin;
@@ -174,11 +184,8 @@ class Parser {
         if (!std::isfinite(v)) syntax("number out of range");
       }
     }
-    Node n;
-    n.kind = NodeKind::Number;
-    n.number = negative ? -v : v;
-    n.is_int = is_int;
-    return addNode(n);
+    is_int_out = is_int;
+    return v;
   }
 
   // 'H1F' hexadecimal and 'B101' binary constants.
@@ -590,8 +597,15 @@ class Parser {
     }
     bool negative = false;
     if (peek() == '-' || peek() == '+') negative = s_[i_++] == '-';
-    int value = number(negative);
-    addWord(address, -1, value, col, false);
+    // The common plain word (X10, G1, F1000) keeps its value in the statement: no node.
+    Stmt st;
+    st.kind = StmtKind::Word;
+    st.name = address;
+    st.column = col;
+    st.literal = true;
+    double v = scanNumber(st.literal_int);
+    st.literal_value = negative ? -v : v;
+    b_.stmts.push_back(st);
     // A letter may follow directly (G1X10Y20); anything else must be a separator.
     if (isDigit(peek())) syntax("unexpected digit");
   }

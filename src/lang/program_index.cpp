@@ -33,6 +33,33 @@ std::string_view staticKeyword(std::string_view kw) {
   return {};
 }
 
+bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isDigitChar(char c) { return c >= '0' && c <= '9'; }
+
+// Fast rejection without normalising: a block whose first word (after "/", the block number)
+// is a letter followed by a digit (G1, X10, N20) cannot start with a label or a control
+// keyword, which both begin with two letters or an underscore. Nor can an empty or comment line.
+bool mayHoldHead(std::string_view s) {
+  size_t i = 0, n = s.size();
+  auto spaces = [&] {
+    while (i < n && (s[i] == ' ' || s[i] == '\t')) ++i;
+  };
+  spaces();
+  if (i < n && s[i] == '/') {
+    ++i;
+    if (i < n && isDigitChar(s[i])) ++i;
+    spaces();
+  }
+  if (i + 1 < n && (s[i] == 'N' || s[i] == 'n' || s[i] == ':') && isDigitChar(s[i + 1])) {
+    ++i;
+    while (i < n && isDigitChar(s[i])) ++i;
+    spaces();
+  }
+  if (i >= n || s[i] == ';') return false;
+  if (isLetter(s[i]) && i + 1 < n && isDigitChar(s[i + 1])) return false;
+  return true;
+}
+
 }  // namespace
 
 ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_line_length) {
@@ -44,7 +71,9 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
   while (true) {
     TextPos here = pos;
     if (!nextLine(text, pos, line)) break;
+    if ((pos.offset & 0xFFFFF) < line.size() + 1) file.releaseBefore(here.offset);
     if (line.size() > max_line_length) continue;  // reported when executed
+    if (!mayHoldHead(line)) continue;
     // Only the head of a line matters, except for IF (which may be a jump).
     std::string_view head = line.substr(0, 96);
     if (!normalizeLine(head, norm, nullptr)) continue;
@@ -97,6 +126,7 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
       links_[here.offset] = {o.pos, o.pos};
     }
   }
+  file.releaseAll();
   if (!stack.empty()) {
     const Open& o = stack.back();
     throw AlarmError(alarm_no::kControlNesting,

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -53,6 +54,20 @@ std::shared_ptr<SourceFile> SourceFile::fromString(std::string name, std::string
   f->owned_ = std::move(text);
   f->text_ = f->owned_;
   return f;
+}
+
+void SourceFile::releaseBefore(size_t offset) const {
+  if (!map_) return;
+  const size_t page = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
+  size_t end = std::min(offset, map_size_) / page * page;
+  if (end <= released_ + (4u << 20)) return;  // in steps of at least 4 MiB
+  ::madvise(static_cast<char*>(map_) + released_, end - released_, MADV_DONTNEED);
+  released_ = end;
+}
+
+void SourceFile::releaseAll() const {
+  if (map_) ::madvise(map_, map_size_, MADV_DONTNEED);
+  released_ = 0;
 }
 
 SourceFile::~SourceFile() {

@@ -21,6 +21,11 @@ class SourceFile {
   // The name used in alarms: the path as the user gave it.
   const std::string& name() const { return name_; }
   const std::filesystem::path& path() const { return path_; }
+  // Lets the kernel drop the mapped pages before `offset` (they are read again from the file
+  // if a backward jump needs them), so resident memory stays flat in the program's length.
+  void releaseBefore(size_t offset) const;
+  // Drops all mapped pages and restarts the releaseBefore watermark (after a full scan).
+  void releaseAll() const;
 
  private:
   SourceFile() = default;
@@ -29,6 +34,7 @@ class SourceFile {
   std::string owned_;
   void* map_ = nullptr;
   size_t map_size_ = 0;
+  mutable size_t released_ = 0;
   std::string_view text_;
 };
 

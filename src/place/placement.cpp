@@ -22,13 +22,13 @@ void Placement::motion(const MotionBlock& m) {
   } else {
     s.start = m.frame.apply(m.start) + m.tool_offset;
     s.end = m.frame.apply(m.end) + m.tool_offset;
-    s.centre = m.frame.apply(m.centre) + m.tool_offset;
-    // The arc turns about frame * normal; a mirrored frame (det < 0) reverses its sense.
-    Vec3 n = m.frame.linear * normal;
-    double len = norm(n);
-    s.normal = len > 0 ? (1.0 / len) * n : normal;
-    bool flip = m.frame.linear.determinant() < 0;
     if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+      s.centre = m.frame.apply(m.centre) + m.tool_offset;
+      // The arc turns about frame * normal; a mirrored frame (det < 0) reverses its sense.
+      Vec3 n = m.frame.linear * normal;
+      double len = norm(n);
+      s.normal = len > 0 ? (1.0 / len) * n : normal;
+      bool flip = m.frame.linear.determinant() < 0;
       // Report the sense as seen from the positive end of the dominant machine axis.
       int dom = 0;
       for (int i = 1; i < 3; ++i)

@@ -34,6 +34,15 @@ double num(const Block& b, int node) {
   return n.number;
 }
 
+// The value of a word: plain numbers (X10) are kept in the statement, expressions in nodes.
+double wordValue(const Block& b, const Stmt& s) {
+  if (s.literal) return s.literal_value;
+  return num(b, s.expr);
+}
+bool wordIsInt(const Block& b, const Stmt& s) {
+  return s.literal ? s.literal_int : b.node(s.expr).is_int;
+}
+
 // ---- normalizeLine ---------------------------------------------------------------------------
 
 TEST(NormalizeLine, UpperCasesAndCutsComment) {
@@ -92,10 +101,10 @@ TEST(Parser, NumericAddressesSplitWithoutSpaces) {
     EXPECT_EQ(b.stmts[i].name, names[i]);
     EXPECT_FALSE(b.stmts[i].has_equals);
     EXPECT_EQ(b.stmts[i].mode, AxisMode::Default);
-    EXPECT_DOUBLE_EQ(num(b, b.stmts[i].expr), values[i]);
+    EXPECT_DOUBLE_EQ(wordValue(b, b.stmts[i]), values[i]);
   }
-  EXPECT_TRUE(b.node(b.stmts[0].expr).is_int);
-  EXPECT_FALSE(b.node(b.stmts[2].expr).is_int);
+  EXPECT_TRUE(wordIsInt(b, b.stmts[0]));
+  EXPECT_FALSE(wordIsInt(b, b.stmts[2]));
   EXPECT_EQ(b.stmts[0].column, 1);
   EXPECT_EQ(b.stmts[1].column, 3);
 }
@@ -109,19 +118,19 @@ TEST(Parser, LowerCaseIsAccepted) {
 TEST(Parser, NumberForms) {
   Block b = parse("X1.5EX3 Y='H1F' F.5");
   ASSERT_EQ(b.stmts.size(), 3u);
-  EXPECT_DOUBLE_EQ(num(b, b.stmts[0].expr), 1500);
-  EXPECT_FALSE(b.node(b.stmts[0].expr).is_int);
-  EXPECT_DOUBLE_EQ(num(b, b.stmts[1].expr), 31);
-  EXPECT_DOUBLE_EQ(num(b, b.stmts[2].expr), 0.5);
+  EXPECT_DOUBLE_EQ(wordValue(b, b.stmts[0]), 1500);
+  EXPECT_FALSE(wordIsInt(b, b.stmts[0]));
+  EXPECT_DOUBLE_EQ(wordValue(b, b.stmts[1]), 31);
+  EXPECT_DOUBLE_EQ(wordValue(b, b.stmts[2]), 0.5);
   Block c = parse("R1='H1F' R2='B101' R3=1.5EX-2");
   ASSERT_EQ(c.stmts.size(), 3u);
-  EXPECT_DOUBLE_EQ(num(c, c.stmts[0].expr), 31);
-  EXPECT_DOUBLE_EQ(num(c, c.stmts[1].expr), 5);
-  EXPECT_DOUBLE_EQ(num(c, c.stmts[2].expr), 0.015);
+  EXPECT_DOUBLE_EQ(wordValue(c, c.stmts[0]), 31);
+  EXPECT_DOUBLE_EQ(wordValue(c, c.stmts[1]), 5);
+  EXPECT_DOUBLE_EQ(wordValue(c, c.stmts[2]), 0.015);
   // Shortest decimal forms convert exactly like strtod.
   Block d = parse("X0.1 Y123456.789");
-  EXPECT_EQ(num(d, d.stmts[0].expr), 0.1);
-  EXPECT_EQ(num(d, d.stmts[1].expr), 123456.789);
+  EXPECT_EQ(wordValue(d, d.stmts[0]), 0.1);
+  EXPECT_EQ(wordValue(d, d.stmts[1]), 123456.789);
 }
 
 TEST(Parser, AddressWithExpression) {
@@ -143,7 +152,7 @@ TEST(Parser, AcAndIcDimensions) {
   Block b = parse("X=AC(5) Y=IC(-2) Z=3");
   ASSERT_EQ(b.stmts.size(), 3u);
   EXPECT_EQ(b.stmts[0].mode, AxisMode::AC);
-  EXPECT_EQ(num(b, b.stmts[0].expr), 5);
+  EXPECT_EQ(wordValue(b, b.stmts[0]), 5);
   EXPECT_EQ(b.stmts[1].mode, AxisMode::IC);
   const Node& y = b.node(b.stmts[1].expr);
   ASSERT_EQ(y.kind, NodeKind::Unary);
@@ -163,12 +172,12 @@ TEST(Parser, AddressExtension) {
   ASSERT_EQ(b.stmts.size(), 3u);
   EXPECT_EQ(b.stmts[0].name, "M");
   EXPECT_EQ(b.stmts[0].ext, 2);
-  EXPECT_EQ(num(b, b.stmts[0].expr), 6);
+  EXPECT_EQ(wordValue(b, b.stmts[0]), 6);
   EXPECT_EQ(b.stmts[1].name, "S");
   EXPECT_EQ(b.stmts[1].ext, 1);
   EXPECT_EQ(b.stmts[2].name, "M");
   EXPECT_EQ(b.stmts[2].ext, -1);
-  EXPECT_EQ(num(b, b.stmts[2].expr), 30);
+  EXPECT_EQ(wordValue(b, b.stmts[2]), 30);
 }
 
 TEST(Parser, NamedAddresses) {
@@ -190,7 +199,7 @@ TEST(Parser, RParameterAssignment) {
   EXPECT_EQ(b.stmts[0].name, "R");
   EXPECT_EQ(b.node(b.stmts[0].target).kind, NodeKind::RParam);
   EXPECT_EQ(b.node(b.stmts[0].target).number, 1);
-  EXPECT_EQ(num(b, b.stmts[0].expr), 5);
+  EXPECT_EQ(wordValue(b, b.stmts[0]), 5);
   EXPECT_EQ(b.stmts[1].kind, StmtKind::Assign);
   EXPECT_EQ(b.node(b.stmts[1].target).kind, NodeKind::RIndex);
   EXPECT_EQ(b.node(b.stmts[2].target).number, 10);
@@ -397,7 +406,7 @@ TEST(Parser, CaseArms) {
   EXPECT_EQ(b.stmts[0].name, "CASE");
   EXPECT_EQ(b.node(b.stmts[0].expr).kind, NodeKind::RParam);
   EXPECT_EQ(b.stmts[1].kind, StmtKind::CaseArm);
-  EXPECT_EQ(num(b, b.stmts[1].expr), 1);
+  EXPECT_EQ(wordValue(b, b.stmts[1]), 1);
   EXPECT_EQ(b.stmts[1].jump, 1);
   EXPECT_EQ(b.node(b.stmts[1].target).text, "A1");
   EXPECT_EQ(b.stmts[2].jump, 2);
@@ -463,7 +472,7 @@ TEST(Parser, BlockIsReusable) {
   EXPECT_FALSE(b.has_number);
   EXPECT_TRUE(b.label.empty());
   ASSERT_EQ(b.stmts.size(), 1u);
-  EXPECT_EQ(num(b, b.stmts[0].expr), 5);
+  EXPECT_EQ(wordValue(b, b.stmts[0]), 5);
 }
 
 // ---- syntax errors ---------------------------------------------------------------------------
