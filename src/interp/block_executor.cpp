@@ -317,6 +317,15 @@ void Interpreter::finishBlock() {
 }
 
 void Interpreter::doMotion() {
+  if (modal_.trc != 40) {
+    // G41/G42 with a radius (or an OFFN allowance) would move the tool centre off the contour:
+    // that is the radius-compensation stage, which is not modelled yet. With radius 0 (D0, or
+    // an edge without radius) the path is the programmed one.
+    double r = modal_.offn + (edge_.valid ? effectiveLengths(edge_.data, edge_.settings).radius : 0.0);
+    if (std::fabs(r) > 1e-12)
+      notModelled(fmt::format("G{} with a compensation radius of {}", modal_.trc, r),
+                  "tool radius compensation (TRC) is not modelled yet");
+  }
   const bool suppress = words_.suppress_frames != 0;
   const Affine frame = suppress ? Affine{} : act_;
   // Programming system: the WCS, or the BCS when frames are suppressed (G53/G153/SUPA).
