@@ -55,6 +55,9 @@ class Channel {
   RunResult runText(const std::string& name, const std::string& text, PathSink& sink,
                     const std::filesystem::path& dir = {});
 
+  // Runs init-file text held in memory (fuzzing, tests).
+  RunResult runInitText(const std::string& name, const std::string& text, PathSink& sink);
+
   // The file name of a Segment::file index.
   const std::string& fileName(int index) const;
   // R parameters that were written and the main program's user variables, as JSON (the

@@ -73,6 +73,10 @@ RunResult Channel::runText(const std::string& name, const std::string& text, Pat
   return impl_->run(lang::SourceFile::fromString(name, text), sink, false, true);
 }
 
+RunResult Channel::runInitText(const std::string& name, const std::string& text, PathSink& sink) {
+  return impl_->run(lang::SourceFile::fromString(name, text), sink, true, false);
+}
+
 const std::string& Channel::fileName(int index) const { return impl_->interp.fileName(index); }
 
 void Channel::writeVariablesJson(std::ostream& out) const { impl_->interp.writeVariablesJson(out); }
