@@ -567,6 +567,8 @@ void Interpreter::assign(const Stmt& st) {
 
 void Interpreter::store(const Node& target, const Value& v) {
   if (target.kind == NodeKind::RParam || target.kind == NodeKind::RIndex) {
+    if (target.kind == NodeKind::RIndex && target.b != 1)
+      raise(alarm_no::kSyntaxError, "R[..] takes one index");
     double n = target.kind == NodeKind::RParam
                    ? target.number
                    : lang::roundToInt(eval_.number(block_, block_.arg(target, 0)));
