@@ -46,6 +46,10 @@ const std::vector<DataSpec>& MachineData::table() {
       {28080, "MM_NUM_USER_FRAMES", C::ChannelMd, 100, true, 5, 100, false, "settable frames"},
       {28085, "MM_LINK_TOA_UNIT", C::ChannelMd, 1, true, 1, 1, false, "TO unit of the channel"},
       // Setting data
+      // Axis machine data: dynamics only, no effect on the path geometry.
+      {32000, "MAX_AX_VELO", C::AxisMd, 10000, false, 0, 1e9, false, "maximum axis velocity (mm/min)"},
+      {32020, "JOG_VELO", C::AxisMd, 2000, false, 0, 1e9, false, "JOG velocity (mm/min)"},
+      {32300, "MAX_AX_ACCEL", C::AxisMd, 1, false, 0, 1e6, false, "maximum axis acceleration (m/s2)"},
       {42440, "FRAME_OFFSET_INCR_PROG", C::ChannelSd, 1, true, 1, 1, true, "1: offset change traversed with G91"},
       {42442, "TOOL_OFFSET_INCR_PROG", C::ChannelSd, 1, true, 1, 1, true, "1: tool offset traversed with G91"},
       {42900, "MIRROR_TOOL_LENGTH", C::ChannelSd, 0, true, 0, 1, false, "mirror geometry+base lengths"},
@@ -62,7 +66,10 @@ const std::vector<DataSpec>& MachineData::table() {
 }
 
 MachineData::MachineData() {
-  for (const auto& s : table()) values_.push_back(s.default_value);
+  for (const auto& s : table()) {
+    values_.push_back(s.default_value);
+    axis_values_.push_back({s.default_value, s.default_value, s.default_value});
+  }
 }
 
 const DataSpec& MachineData::spec(int id) const { return table()[static_cast<size_t>(id)]; }
@@ -102,6 +109,12 @@ double MachineData::get(std::string_view name) const {
   int id = find(name);
   if (id < 0) raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", name));
   return get(id);
+}
+
+void MachineData::set(int id, int axis, double value) {
+  set(id, value);  // range checks
+  axis_values_[static_cast<size_t>(id)][static_cast<size_t>(axis)] = values_[static_cast<size_t>(id)];
+  values_[static_cast<size_t>(id)] = spec(id).default_value;
 }
 
 void MachineData::set(int id, double value) {

@@ -4,6 +4,7 @@
 // 99013 (never accepted and ignored).
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,10 @@ class MachineData {
   // Finds by `$SC_NAME`-style name or `SD42940`/`MD20270` number form. Returns -1 if unknown.
   int find(std::string_view name) const;
   double get(int id) const { return values_[static_cast<size_t>(id)]; }
+  // Axis machine data ($MA_NAME[X]): one value per geometry axis (0 = X, 1 = Y, 2 = Z).
+  bool isAxisData(int id) const { return spec(id).cls == DataClass::AxisMd; }
+  double get(int id, int axis) const { return axis_values_[static_cast<size_t>(id)][static_cast<size_t>(axis)]; }
+  void set(int id, int axis, double value);
   double get(std::string_view name) const;
   // Throws 12550 / 12160 / 99013.
   void set(int id, double value);
@@ -38,6 +43,7 @@ class MachineData {
 
  private:
   std::vector<double> values_;
+  std::vector<std::array<double, 3>> axis_values_;
 };
 
 }  // namespace ncoffset::interp

@@ -73,6 +73,11 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
 bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, bool indexed,
                              Value& out) {
   if (int id = data_.find(name); id >= 0) {
+    if (data_.isAxisData(id)) {
+      if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+      out = Value::real(data_.get(id, axisOf(idx[0])));
+      return true;
+    }
     if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
     const DataSpec& s = data_.spec(id);
     out = s.integer ? Value::integer(data_.get(id)) : Value::real(data_.get(id));
@@ -121,6 +126,11 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
 void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx, bool indexed,
                               const Value& v) {
   if (int id = data_.find(name); id >= 0) {
+    if (data_.isAxisData(id)) {
+      if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+      data_.set(id, axisOf(idx[0]), lang::toNumber(v, "machine data"));
+      return;
+    }
     if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
     data_.set(id, lang::toNumber(v, "machine/setting data"));
     if (data_.spec(id).number == 28050) {  // MD28050 MM_NUM_R_PARAM: number of R parameters
