@@ -41,6 +41,36 @@ bool splitToolName(std::string_view name, std::string_view& kind, int& number) {
   return true;
 }
 
+// A `$TC_...` variable with its indices checked: tool data `$TC_TPn[t]`/`$TC_TPCn[t]` (n 1..20)
+// or edge data `$TC_DPn[t,d]` (1..25), `$TC_DPV[t,d]`, `$TC_DPV3..5`, `$TC_DPVN3..5`,
+// `$TC_DPC1..10`. Returns false for names that are no tool variable (alarm 12550 later).
+struct ToolVariable {
+  std::string_view kind;  // TP, TPC, DP, DPV, DPVN, DPC
+  int n = 0;
+  int t = 0;
+  int d = 0;  // 0 for tool data
+};
+
+bool parseToolVariable(std::string_view name, std::span<const Value> idx, bool indexed,
+                       ToolVariable& out) {
+  if (!splitToolName(name, out.kind, out.n)) return false;
+  const std::string_view k = out.kind;
+  const int n = out.n;
+  if (k == "TP" || k == "TPC") {
+    if (n < 1 || n > 20) return false;
+    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T]", name));
+    out.t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
+    return true;
+  }
+  bool edge = (k == "DP" && n >= 1 && n <= 25) || (k == "DPV" && (n == 0 || (n >= 3 && n <= 5))) ||
+              (k == "DPVN" && n >= 3 && n <= 5) || (k == "DPC" && n >= 1 && n <= 10);
+  if (!edge) return false;
+  if (!indexed || idx.size() != 2) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T,D]", name));
+  out.t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
+  out.d = wholeIndex(idx[1], 1, tool::kMaxEdge, alarm_no::kArrayIndex2, "D");
+  return true;
+}
+
 }  // namespace
 
 int Interpreter::resolveToolName(const std::string& name) {
@@ -129,12 +159,11 @@ bool Interpreter::readTool(std::string_view name, std::span<const Value> idx, bo
     }
     return true;
   }
-  std::string_view kind;
-  int n;
-  if (!splitToolName(name, kind, n)) return false;
+  ToolVariable var;
+  if (!parseToolVariable(name, idx, indexed, var)) return false;
+  const std::string_view kind = var.kind;
+  const int n = var.n, t = var.t, d = var.d;
   if (kind == "TP" || kind == "TPC") {
-    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T]", name));
-    int t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
     tool::Tool* tool = tools_.tool(t);
     if (!tool) raise(alarm_no::kToolNotExisting, fmt::format("T= {} not existing", t));
     if (kind == "TP" && n == 2) {
@@ -147,14 +176,6 @@ bool Interpreter::readTool(std::string_view name, std::span<const Value> idx, bo
     out = Value::real(it == m.end() ? 0.0 : it->second);
     return true;
   }
-  if (kind != "DP" && kind != "DPV" && kind != "DPC" && kind != "DPVN") return false;
-  if ((kind == "DP" && (n < 1 || n > 25)) || (kind == "DPV" && n != 0 && (n < 3 || n > 5)) ||
-      (kind == "DPVN" && (n < 3 || n > 5)) || (kind == "DPC" && (n < 1 || n > 10)))
-    return false;  // not a tool parameter: alarm 12550
-  if (!indexed || idx.size() != 2)
-    raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T,D]", name));
-  int t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
-  int d = wholeIndex(idx[1], 1, tool::kMaxEdge, alarm_no::kArrayIndex2, "D");
   const EdgeData* e = tools_.edge(t, d);
   if (!e) edgeMissing(t, d);
   if (kind == "DP") out = Value::real(e->dp[static_cast<size_t>(n)]);
@@ -174,26 +195,16 @@ bool Interpreter::writeTool(std::string_view name, std::span<const Value> idx, b
   if (name == "$P_TOOLNO" || name == "$P_TOOL" || name == "$P_TOOLP" || name == "$P_TOOLR" ||
       name == "$P_TOOLL" || name == "$P_TOOLO")
     raise(alarm_no::kNameNotDefined, fmt::format("{} can only be read", name));
-  std::string_view kind;
-  int n;
-  if (!splitToolName(name, kind, n)) return false;
+  ToolVariable var;
+  if (!parseToolVariable(name, idx, indexed, var)) return false;
+  const std::string_view kind = var.kind;
+  const int n = var.n, t = var.t, d = var.d;
   if (kind == "TP" || kind == "TPC") {
-    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T]", name));
-    int t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
-    if (n < 1 || n > 20) return false;
     tool::Tool& tool = tools_.toolForWrite(t);
     if (kind == "TP" && n == 2) tool.name[2] = lang::toText(v);
     else (kind == "TP" ? tool.tp : tool.tpc)[n] = lang::toNumber(v, "tool parameter");
     return true;
   }
-  if (kind != "DP" && kind != "DPV" && kind != "DPC" && kind != "DPVN") return false;
-  if ((kind == "DP" && (n < 1 || n > 25)) || (kind == "DPV" && n != 0 && (n < 3 || n > 5)) ||
-      (kind == "DPVN" && (n < 3 || n > 5)) || (kind == "DPC" && (n < 1 || n > 10)))
-    return false;
-  if (!indexed || idx.size() != 2)
-    raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T,D]", name));
-  int t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
-  int d = wholeIndex(idx[1], 1, tool::kMaxEdge, alarm_no::kArrayIndex2, "D");
   double x = lang::toNumber(v, "tool parameter");
   if (!tools_.edge(t, d)) {
     if (tool_edges_ >= options_.limits.max_tool_edges)
