@@ -206,6 +206,9 @@ bool Interpreter::writeTool(std::string_view name, std::span<const Value> idx, b
     return true;
   }
   double x = lang::toNumber(v, "tool parameter");
+  if (!(std::fabs(x) <= 1e9) || (kind == "DP" && n == 1 && !(x >= 0 && x <= 9999)) ||
+      (kind == "DP" && n == 2 && !(x >= 0 && x <= 9)))
+    raise(alarm_no::kValueRange, fmt::format("value range exceeded: {}[{},{}] = {}", name, t, d, x));
   if (!tools_.edge(t, d)) {
     if (tool_edges_ >= options_.limits.max_tool_edges)
       raise(alarm_no::kTooManyVariables,
