@@ -248,6 +248,8 @@ void Interpreter::namedWord(const Stmt& st) {
     words_.frame_command = w;
     return;
   }
+  if (w == "STOPRE" && trc_.active())
+    notModelled("STOPRE", "a preprocessing stop while tool radius compensation is active (SD42480)");
   if (isOneOf(w, {"STOPRE", "BRISK", "SOFT", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN",
                   "TOWSTD", "TOWMCS", "TOWWCS", "TOWBCS", "TOWTCS", "TOWKCS", "DIAMOF", "TRAFOOF",
                   "SAVE", "DISPLOF", "DISPLON", "WAITM", "G64"}))
@@ -301,7 +303,13 @@ void Interpreter::finishBlock() {
     raise(alarm_no::kCircleProgramming,
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
+  block_moved_ = false;
   if (!axes_consumed && (any_axis || (is_arc && circle_words))) doMotion();
+  // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
+  // compensated elements counts against MD20250.
+  if (!block_moved_ && trc_.active() && !block_.stmts.empty() &&
+      block_.stmts.front().kind == lang::StmtKind::Word)
+    trc_.blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
     if (levels_.size() > 1) returnFromSubprogram();  // M2/M30 in a subprogram act like M17
@@ -317,15 +325,6 @@ void Interpreter::finishBlock() {
 }
 
 void Interpreter::doMotion() {
-  if (modal_.trc != 40) {
-    // G41/G42 with a radius (or an OFFN allowance) would move the tool centre off the contour:
-    // that is the radius-compensation stage, which is not modelled yet. With radius 0 (D0, or
-    // an edge without radius) the path is the programmed one.
-    double r = modal_.offn + (edge_.valid ? effectiveLengths(edge_.data, edge_.settings).radius : 0.0);
-    if (std::fabs(r) > 1e-12)
-      notModelled(fmt::format("G{} with a compensation radius of {}", modal_.trc, r),
-                  "tool radius compensation (TRC) is not modelled yet");
-  }
   const bool suppress = words_.suppress_frames != 0;
   const Affine frame = suppress ? Affine{} : act_;
   // Programming system: the WCS, or the BCS when frames are suppressed (G53/G153/SUPA).
@@ -415,6 +414,17 @@ void Interpreter::doMotion() {
     }
   }
   m.tool_offset = applied_offset_;
+  m.plane = modal_.plane;
+  m.trc.mode = modal_.trc;
+  m.trc.radius = modal_.offn + (edge_.valid ? effectiveLengths(edge_.data, edge_.settings).radius : 0.0);
+  m.trc.approach = modal_.approach;
+  m.trc.corner = modal_.corner;
+  m.trc.collision = modal_.collision;
+  m.trc.disc = modal_.disc;
+  m.trc.strategy = modal_.trc_strategy;
+  m.trc.corner_limit = data_.get(md_corner_limit_);
+  m.trc.curve_insert_limit = data_.get(md_insert_limit_);
+  m.trc.max_dummy_blocks = static_cast<int>(data_.get(md_dummy_blocks_));
   // Computed geometry must stay finite and within the machine's number range: a frame with a
   // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
   Vec3 checks[] = {frame.apply(m.end) + applied_offset_, frame.apply(m.centre)};
@@ -425,7 +435,8 @@ void Interpreter::doMotion() {
       else if (std::fabs(p[i]) > 1e9)
         raise(alarm_no::kValueRange,
               fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i], "XYZ"[i]));
-  placement_.motion(m);
+  block_moved_ = true;
+  trc_.motion(m);
   bcs_ = frame.apply(target);
   wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
 }

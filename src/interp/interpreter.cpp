@@ -21,6 +21,7 @@ using lang::Value;
 Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
     : options_(options),
       placement_(sink, options.coords),
+      trc_(placement_),
       sink_(sink),
       eval_(*this),
       uifr_(100) {
@@ -28,6 +29,9 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
   md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
   md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
+  md_corner_limit_ = data_.find("$MC_CUTCOM_CORNER_LIMIT");
+  md_insert_limit_ = data_.find("$MC_CUTCOM_CURVE_INSERT_LIMIT");
+  md_dummy_blocks_ = data_.find("$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS");
   md_change_mode_ = data_.find("$MC_TOOL_CHANGE_MODE");
   md_change_m_ = data_.find("$MC_TOOL_CHANGE_M_CODE");
   md_default_edge_ = data_.find("$MC_CUTTING_EDGE_DEFAULT");
@@ -102,7 +106,10 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
       raise(alarm_no::kArrayTooLarge, "out of memory while executing this block");
     }
   }
-  if (!init_file) main_vars_ = std::move(levels_.front().locals);
+  if (!init_file) {
+    trc_.finish();  // the last compensated element ends on its normal
+    main_vars_ = std::move(levels_.front().locals);
+  }
   levels_.clear();
 }
 

@@ -22,6 +22,7 @@
 #include "ncoffset/frame.hpp"
 #include "place/placement.hpp"
 #include "tool/tool_store.hpp"
+#include "trc/radius_compensation.hpp"
 
 namespace ncoffset::interp {
 
@@ -117,6 +118,7 @@ class Interpreter final : public lang::Environment {
 
   RunOptions options_;
   place::Placement placement_;
+  trc::RadiusCompensation trc_;
   PathSink& sink_;
   lang::Evaluator eval_;
   MachineData data_;
@@ -156,6 +158,8 @@ class Interpreter final : public lang::Environment {
   Affine act_inverse_;
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
+  int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0;
+  bool block_moved_ = false;  // the executing block handed a motion on
 
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection
   // snapshotted (data, setting data and mirroring act from the next edge selection).

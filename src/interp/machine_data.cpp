@@ -33,7 +33,7 @@ const std::vector<DataSpec>& MachineData::table() {
       {20220, "CUTCOM_MAX_DISC", C::ChannelMd, 50, true, 0, 75, false, "upper limit of DISC"},
       {20230, "CUTCOM_CURVE_INSERT_LIMIT", C::ChannelMd, 10, false, 0, 150, false, "flat outside corners"},
       {20240, "CUTCOM_MAXNUM_CHECK_BLOCKS", C::ChannelMd, 3, true, 2, 150, false, "TRC look-ahead blocks"},
-      {20250, "CUTCOM_MAXNUM_DUMMY_BLOCKS", C::ChannelMd, 1, true, 0, 150, false, "TRC blocks without plane motion"},
+      {20250, "CUTCOM_MAXNUM_DUMMY_BLOCKS", C::ChannelMd, 3, true, 0, 150, false, "TRC blocks without plane motion"},
       {20252, "CUTCOM_MAXNUM_SUPPR_BLOCKS", C::ChannelMd, 0, true, 0, 150, false, "TRC suppressed blocks"},
       {20270, "CUTTING_EDGE_DEFAULT", C::ChannelMd, 1, true, -1, 32000, false, "edge after tool change"},
       {20360, "TOOL_PARAMETER_DEF_MASK", C::ChannelMd, 0, true, 0, 0, true, "diameter interpretation not modelled"},

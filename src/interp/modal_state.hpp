@@ -9,13 +9,11 @@
 #include "lang/block.hpp"
 #include "ncoffset/geometry.hpp"
 #include "ncoffset/path.hpp"
+#include "ncoffset/trc.hpp"
 
 namespace ncoffset::interp {
 
 enum class Units { G71, G70, G710, G700 };
-enum class Approach { Norm, Kont, KontC, KontT };          // group 17
-enum class CornerMode { TransitionCircle, Intersection };   // group 18: G450, G451
-enum class CollisionCheck { Cdof, Cdon, Cdof2 };            // group 23
 enum class FeedType { G93, G94, G95, G96, G97 };
 
 struct ModalState {

@@ -6,6 +6,7 @@
 #include "ncoffset/channel.hpp"
 #include "ncoffset/frame.hpp"
 #include "ncoffset/path.hpp"
+#include "ncoffset/trc.hpp"
 
 namespace ncoffset::place {
 
@@ -16,6 +17,8 @@ struct MotionBlock {
   Vec3 end;      // WCS
   Vec3 centre;   // WCS, arcs
   int applicate = 2;  // arcs: index of the axis perpendicular to the plane (G17: Z)
+  Plane plane = Plane::G17;
+  TrcSettings trc;    // radius compensation of this block
   int turns = 0;
   Affine frame;  // WCS -> BCS for this block (identity with G53/G153/SUPA and programmed MCS)
   Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point

@@ -75,7 +75,7 @@ TEST(MachineData, DefaultsOfSpecSection10) {
       {"MD10600", 1},      // RPY angles
       {"MD10610", 0},      // mirror about the programmed axis
       {"MD20240", 3},      // CUTCOM_MAXNUM_CHECK_BLOCKS
-      {"MD20250", 1},      // CUTCOM_MAXNUM_DUMMY_BLOCKS
+      {"MD20250", 3},      // CUTCOM_MAXNUM_DUMMY_BLOCKS (details Q5: default 3)
       {"MD20210", 100},    // CUTCOM_CORNER_LIMIT
       {"MD20270", 1},      // CUTTING_EDGE_DEFAULT
       {"MD21000", 0.01},   // CIRCLE_ERROR_CONST

@@ -1,0 +1,53 @@
+// Plane contour elements (lines and circular arcs in abscissa/ordinate coordinates of the active
+// plane) and the primitives tool radius compensation needs: tangents, equidistants and
+// intersections (W1 2.4 / spec §5, details Q1-Q5).
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "geom/arc.hpp"
+
+namespace ncoffset::geom {
+
+inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.a + b.a, a.o + b.o}; }
+inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.a - b.a, a.o - b.o}; }
+inline Vec2 operator*(double s, Vec2 v) { return {s * v.a, s * v.o}; }
+inline double dot(Vec2 a, Vec2 b) { return a.a * b.a + a.o * b.o; }
+inline double cross(Vec2 a, Vec2 b) { return a.a * b.o - a.o * b.a; }
+inline double length(Vec2 v) { return std::hypot(v.a, v.o); }
+inline Vec2 leftNormal(Vec2 t) { return {-t.o, t.a}; }
+
+// A line (arc == false) or a circular arc from p0 to p1 about c, turning ccw (G3) or cw (G2).
+// `turns` full revolutions are added to the sweep (TURN=).
+struct Element {
+  bool arc = false;
+  Vec2 p0, p1, c;
+  bool ccw = false;
+  int turns = 0;
+  double radius() const { return length(p0 - c); }
+  // Unit tangent in the direction of travel at the start / end.
+  Vec2 startTangent() const;
+  Vec2 endTangent() const;
+  // Signed sweep angle in radians (positive ccw), 2*pi for a full circle.
+  double sweep() const;
+};
+
+// The equidistant at signed distance d (d > 0: to the left of the direction of travel). For an
+// arc the radius becomes r - d (ccw) or r + d (cw); a radius <= 0 has no equidistant.
+std::optional<Element> equidistant(const Element& e, double d);
+
+// Intersections of the two elements taken as whole lines / circles, each with the parameter of
+// the point on either element: for lines the fraction along p0->p1, for arcs the fraction of
+// the sweep from p0 (values outside 0..1 lie on the extensions).
+struct Crossing {
+  Vec2 p;
+  double u1, u2;
+};
+std::vector<Crossing> intersect(const Element& e1, const Element& e2);
+
+// The point at fraction u of an element (same parametrisation as Crossing).
+Vec2 pointAt(const Element& e, double u);
+
+}  // namespace ncoffset::geom

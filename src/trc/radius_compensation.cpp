@@ -1,0 +1,325 @@
+#include "trc/radius_compensation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::trc {
+
+using geom::Element;
+using geom::Vec2;
+using place::MotionBlock;
+
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+constexpr double kEps = 1e-9;
+
+[[noreturn]] void notModelled(const std::string& what) {
+  raise(alarm_no::kNotModelled,
+        fmt::format("{} is not modelled by ncoffset yet (tool radius compensation)", what));
+}
+
+bool sameAffine(const Affine& a, const Affine& b) {
+  for (size_t i = 0; i < 3; ++i) {
+    if (std::fabs(a.offset[static_cast<int>(i)] - b.offset[static_cast<int>(i)]) > 1e-12) return false;
+    for (size_t j = 0; j < 3; ++j)
+      if (std::fabs(a.linear.m[i][j] - b.linear.m[i][j]) > 1e-12) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+double RadiusCompensation::side() const {
+  // G41: left of the direction of travel; a negative compensation value changes the side
+  // (PM-NC p256).
+  double s = settings_.mode == 41 ? 1.0 : -1.0;
+  return settings_.radius < 0 ? -s : s;
+}
+
+Element RadiusCompensation::toElement(const MotionBlock& m) const {
+  PlaneAxes pa = planeAxes(m.plane);
+  Element e;
+  e.p0 = {m.start[pa.abscissa], m.start[pa.ordinate]};
+  e.p1 = {m.end[pa.abscissa], m.end[pa.ordinate]};
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+    e.arc = true;
+    e.c = {m.centre[pa.abscissa], m.centre[pa.ordinate]};
+    e.ccw = m.motion == Motion::G3;
+    e.turns = m.turns;
+  }
+  return e;
+}
+
+MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
+  PlaneAxes pa = planeAxes(like.plane);
+  MotionBlock b = like;
+  b.start[pa.abscissa] = e.p0.a;
+  b.start[pa.ordinate] = e.p0.o;
+  b.end[pa.abscissa] = e.p1.a;
+  b.end[pa.ordinate] = e.p1.o;
+  if (e.arc) {
+    b.motion = e.ccw ? Motion::G3 : Motion::G2;
+    b.centre[pa.abscissa] = e.c.a;
+    b.centre[pa.ordinate] = e.c.o;
+    b.centre[pa.applicate] = b.start[pa.applicate];
+    b.applicate = pa.applicate;
+    b.turns = e.turns;
+  } else if (b.motion == Motion::G2 || b.motion == Motion::G3) {
+    b.motion = Motion::G1;
+  }
+  return b;
+}
+
+bool RadiusCompensation::planeMotion(const MotionBlock& m) const {
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) return true;
+  Element e = toElement(m);
+  return geom::length(e.p1 - e.p0) > 1e-12;
+}
+
+RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m) const {
+  Piece p;
+  p.block = m;
+  p.programmed = toElement(m);
+  double r = std::fabs(settings_.radius);
+  auto eq = geom::equidistant(p.programmed, side() * r);
+  if (!eq)
+    raise(10751, fmt::format("danger of collision due to tool radius compensation: the arc radius "
+                             "{} is not larger than the compensation value {} on its inside",
+                             p.programmed.radius(), r));
+  p.compensated = *eq;
+  return p;
+}
+
+void RadiusCompensation::emitPiece(const Piece& p) { emit(toBlock(p.block, p.compensated)); }
+
+void RadiusCompensation::emitWaiting(Vec2 at) {
+  // Blocks without plane motion (infeed, other axes) run at the intermediate point (PM-F 8-40).
+  for (MotionBlock w : waiting_) {
+    PlaneAxes pa = planeAxes(w.plane);
+    w.start[pa.abscissa] = w.end[pa.abscissa] = at.a;
+    w.start[pa.ordinate] = w.end[pa.ordinate] = at.o;
+    emit(w);
+  }
+  waiting_.clear();
+}
+
+void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
+  if (m.trc.mode != settings_.mode)
+    notModelled(fmt::format("changing from G{} to G{} while compensation is active", settings_.mode,
+                            m.trc.mode));
+  if (std::fabs(m.trc.radius - settings_.radius) > 1e-12)
+    notModelled("a change of the compensation value (D, wear or OFFN) while compensation is active");
+  if (m.trc.collision == CollisionCheck::Cdon) notModelled("CDON bottleneck detection");
+  if (m.plane != selection_.plane)
+    raise(10757, "change of compensation plane not possible while tool radius compensation is active");
+  if (!sameAffine(m.frame, selection_.frame))
+    notModelled("a frame change while compensation is active");
+}
+
+void RadiusCompensation::blockWithoutMotion() {
+  if (state_ == State::Off) return;
+  if (++dummy_blocks_ > settings_.max_dummy_blocks)
+    raise(10762, fmt::format("too many empty blocks between two traversing blocks with active tool "
+                             "radius compensation (MD20250 = {})",
+                             settings_.max_dummy_blocks));
+}
+
+void RadiusCompensation::motion(const MotionBlock& m) {
+  switch (state_) {
+    case State::Off: {
+      const bool wants = m.trc.mode != 40 && std::fabs(m.trc.radius) > 1e-12;
+      if (!wants || !planeMotion(m)) {
+        emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
+        return;
+      }
+      if (m.motion != Motion::G0 && m.motion != Motion::G1)
+        raise(10753, "activation of tool radius compensation only possible in linear block");
+      if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
+        notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
+      if (m.trc.collision == CollisionCheck::Cdon) notModelled("CDON bottleneck detection");
+      if (m.trc.strategy != 460) notModelled(fmt::format("G{}", m.trc.strategy));
+      settings_ = m.trc;
+      selection_ = m;
+      state_ = State::Selecting;
+      dummy_blocks_ = 0;
+      return;
+    }
+    case State::Selecting: {
+      if (m.trc.mode == 40) {
+        // G40 in the block after the selection block: no selection takes place (W1 2-41).
+        emit(selection_);
+        for (const auto& w : waiting_) emit(w);
+        waiting_.clear();
+        emit(m);
+        state_ = State::Off;
+        return;
+      }
+      checkSameSettings(m);
+      if (!planeMotion(m)) {
+        waiting_.push_back(m);
+        blockWithoutMotion();
+        return;
+      }
+      Piece first = compensate(m);
+      Element approach;
+      approach.p0 = toElement(selection_).p0;
+      approach.p1 = first.compensated.p0;
+      const Vec2 p1 = first.programmed.p0;
+      const Vec2 n1 = side() * geom::leftNormal(first.programmed.startTangent());
+      if (settings_.approach == Approach::Kont && geom::dot(approach.p0 - p1, n1) < -kEps)
+        notModelled("KONT approach from behind the contour");
+      // NORM: one straight line to the normal point of the first element (details Q1); if it
+      // cuts the first equidistant earlier, the intersection replaces that point (G460).
+      if (geom::length(approach.p1 - approach.p0) > kEps) {
+        double best = 2;
+        for (const auto& x : geom::intersect(approach, first.compensated))
+          if (x.u1 > kEps && x.u1 < 1 - 1e-9 && x.u2 > -kEps && x.u2 < 1 + kEps && x.u1 < best) {
+            best = x.u1;
+            approach.p1 = x.p;
+          }
+        if (best < 2) first.compensated.p0 = approach.p1;
+      }
+      emit(toBlock(selection_, approach));
+      emitWaiting(approach.p1);
+      pending_ = first;
+      dummy_blocks_ = 0;
+      state_ = State::On;
+      return;
+    }
+    case State::On: {
+      if (m.trc.mode == 40) {
+        // Deselection with G40 (NORM): the last element ends on its normal at its end point,
+        // then a straight line to the programmed end point (details Q1).
+        if (m.motion != Motion::G0 && m.motion != Motion::G1)
+          raise(10754, "deactivation of tool radius compensation only possible in linear block");
+        if (m.trc.strategy != 460) notModelled(fmt::format("G{}", m.trc.strategy));
+        const Piece& last = *pending_;
+        const Vec2 pe = last.programmed.p1;
+        const Vec2 ne = side() * geom::leftNormal(last.programmed.endTangent());
+        Element retract = toElement(m);
+        if (m.trc.approach == Approach::Kont && geom::dot(retract.p1 - pe, ne) < -kEps)
+          notModelled("KONT retraction behind the contour");
+        if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
+          notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
+        emitPiece(last);
+        emitWaiting(last.compensated.p1);
+        retract.p0 = last.compensated.p1;
+        MotionBlock b = toBlock(m, retract);
+        emit(b);
+        pending_.reset();
+        state_ = State::Off;
+        return;
+      }
+      checkSameSettings(m);
+      settings_.corner = m.trc.corner;
+      settings_.disc = m.trc.disc;
+      if (!planeMotion(m)) {
+        waiting_.push_back(m);
+        blockWithoutMotion();
+        return;
+      }
+      Piece next = compensate(m);
+      corner(next);
+      dummy_blocks_ = 0;
+      return;
+    }
+  }
+}
+
+void RadiusCompensation::corner(Piece& next) {
+  Piece& cur = *pending_;
+  const Vec2 a = cur.compensated.p1, b = next.compensated.p0;
+  const Vec2 p = cur.programmed.p1;  // the corner point
+  if (geom::length(a - b) < kEps) {  // tangent transition: nothing inserted
+    emitPiece(cur);
+    emitWaiting(a);
+    pending_ = next;
+    return;
+  }
+  const Vec2 t1 = cur.programmed.endTangent(), t2 = next.programmed.startTangent();
+  const double c = geom::cross(t1, t2), d = geom::dot(t1, t2);
+  const double s = side();
+  const bool reversal = std::fabs(c) < 1e-12 && d < 0;
+  const bool inside = !reversal && s * c > 0;
+  if (inside) {
+    // Inside corner: both elements end at the intersection of their equidistants; of several,
+    // the one nearest the start of the next block (W1 2.4.3).
+    std::optional<geom::Crossing> best;
+    for (const auto& x : geom::intersect(cur.compensated, next.compensated))
+      if (x.u1 > -kEps && x.u1 < 1 + kEps && x.u2 > -kEps && x.u2 < 1 + kEps &&
+          (!best || x.u2 < best->u2))
+        best = x;
+    if (!best)
+      notModelled("an inside corner whose equidistants do not meet within the two blocks (the "
+                  "look-ahead over MD20240 blocks)");
+    cur.compensated.p1 = best->p;
+    next.compensated.p0 = best->p;
+    emitPiece(cur);
+    emitWaiting(best->p);
+    pending_ = next;
+    return;
+  }
+  // Outside corner (details Q3/Q4): G450 circle unless flatter than MD20230; G451 intersection
+  // unless the contour angle reaches MD20210.
+  const double angle = reversal ? 180.0 : std::acos(std::fmax(-1.0, std::fmin(1.0, d))) * kDeg;
+  bool circle = settings_.corner == CornerMode::TransitionCircle
+                    ? !(angle < settings_.curve_insert_limit)
+                    : angle >= settings_.corner_limit;
+  if (circle && settings_.corner == CornerMode::TransitionCircle && settings_.disc > 0)
+    notModelled(fmt::format("DISC={} (transition curve other than a circle)", settings_.disc));
+  if (!circle) {
+    std::optional<geom::Crossing> best;
+    for (const auto& x : geom::intersect(cur.compensated, next.compensated))
+      if (x.u1 > 1 - kEps && x.u2 < kEps &&
+          (!best || geom::length(x.p - p) < geom::length(best->p - p)))
+        best = x;
+    if (best) {
+      cur.compensated.p1 = best->p;
+      next.compensated.p0 = best->p;
+      emitPiece(cur);
+      emitWaiting(best->p);
+      pending_ = next;
+      return;
+    }
+  }
+  // Transition circle of the tool radius about the corner point; it belongs to the next block.
+  emitPiece(cur);
+  emitWaiting(a);
+  Element arc;
+  arc.arc = true;
+  arc.p0 = a;
+  arc.p1 = b;
+  arc.c = p;
+  arc.ccw = s < 0;  // around the outside: clockwise for G41, counter-clockwise for G42
+  MotionBlock tb = toBlock(next.block, arc);
+  PlaneAxes pa = planeAxes(tb.plane);
+  tb.start[pa.applicate] = tb.end[pa.applicate] = next.block.start[pa.applicate];
+  tb.centre[pa.applicate] = tb.start[pa.applicate];
+  tb.turns = 0;
+  emit(tb);
+  pending_ = next;
+}
+
+void RadiusCompensation::finish() {
+  if (state_ == State::Selecting) {
+    // No contour element follows the selection block: it ends on its own normal.
+    Piece only = compensate(selection_);
+    Element approach;
+    approach.p0 = only.programmed.p0;
+    approach.p1 = only.compensated.p1;
+    emit(toBlock(selection_, approach));
+    emitWaiting(approach.p1);
+  } else if (state_ == State::On && pending_) {
+    emitPiece(*pending_);
+    emitWaiting(pending_->compensated.p1);
+  }
+  waiting_.clear();
+  pending_.reset();
+  state_ = State::Off;
+}
+
+}  // namespace ncoffset::trc
