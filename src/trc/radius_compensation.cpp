@@ -31,6 +31,23 @@ bool sameAffine(const Affine& a, const Affine& b) {
   return true;
 }
 
+// The tangent point on the circle about `c` (radius r) of a line through `p` along which the
+// tool keeps `c` on its right (s > 0, G41) or left (s < 0, G42): travelling p -> T on approach,
+// T -> p on retraction (details Q2). nullopt when p lies inside the circle.
+std::optional<Vec2> tangentPoint(Vec2 p, Vec2 c, double r, double s, bool approach) {
+  Vec2 v = p - c;
+  double d = geom::length(v);
+  if (d <= r + kEps) return std::nullopt;
+  double phi = std::atan2(v.o, v.a), alpha = std::acos(r / d);
+  for (double ang : {phi + alpha, phi - alpha}) {
+    Vec2 t{c.a + r * std::cos(ang), c.o + r * std::sin(ang)};
+    Vec2 dir = approach ? t - p : p - t;
+    double sidedness = geom::cross(dir, c - (approach ? p : t));
+    if (s * sidedness < 0) return t;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 double RadiusCompensation::side() const {
@@ -170,8 +187,10 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       approach.p1 = first.compensated.p0;
       const Vec2 p1 = first.programmed.p0;
       const Vec2 n1 = side() * geom::leftNormal(first.programmed.startTangent());
-      if (settings_.approach == Approach::Kont && geom::dot(approach.p0 - p1, n1) < -kEps)
-        notModelled("KONT approach from behind the contour");
+      if (settings_.approach == Approach::Kont && geom::dot(approach.p0 - p1, n1) < -kEps) {
+        kontApproach(first);
+        return;
+      }
       // NORM: one straight line to the normal point of the first element (details Q1); if it
       // cuts the first equidistant earlier, the intersection replaces that point (G460).
       if (geom::length(approach.p1 - approach.p0) > kEps) {
@@ -201,8 +220,10 @@ void RadiusCompensation::motion(const MotionBlock& m) {
         const Vec2 pe = last.programmed.p1;
         const Vec2 ne = side() * geom::leftNormal(last.programmed.endTangent());
         Element retract = toElement(m);
-        if (m.trc.approach == Approach::Kont && geom::dot(retract.p1 - pe, ne) < -kEps)
-          notModelled("KONT retraction behind the contour");
+        if (m.trc.approach == Approach::Kont && geom::dot(retract.p1 - pe, ne) < -kEps) {
+          kontRetraction(m);
+          return;
+        }
         if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
           notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
         emitPiece(last);
@@ -302,6 +323,113 @@ void RadiusCompensation::corner(Piece& next) {
   tb.turns = 0;
   emit(tb);
   pending_ = next;
+}
+
+// KONT with the start point behind the contour (details Q2): a straight line tangent to the
+// circle of radius R about the contour start point, then (G450) an arc on that circle to the
+// normal point of the first element, or (G451, below MD20210) the line extended to the first
+// equidistant. Both belong to the selection block.
+void RadiusCompensation::kontApproach(Piece& first) {
+  const Vec2 p0 = toElement(selection_).p0;
+  const Vec2 p1 = first.programmed.p0;
+  const double r = std::fabs(settings_.radius), s = side();
+  std::optional<Vec2> t = tangentPoint(p0, p1, r, s, true);
+  if (!t)
+    raise(10755, "activation of tool radius compensation via KONT not possible in current start point");
+  Element line;
+  line.p0 = p0;
+  line.p1 = *t;
+  const Vec2 dir = geom::length(*t - p0) > 0 ? (1.0 / geom::length(*t - p0)) * (*t - p0) : Vec2{1, 0};
+  const double angle = std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(dir, first.programmed.startTangent())))) * kDeg;
+  if (settings_.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
+    std::optional<geom::Crossing> best;
+    for (const auto& x : geom::intersect(line, first.compensated))
+      if (x.u1 > kEps && x.u2 < kEps && (!best || geom::length(x.p - p1) < geom::length(best->p - p1)))
+        best = x;
+    if (best) {
+      line.p1 = best->p;
+      first.compensated.p0 = best->p;
+      emit(toBlock(selection_, line));
+      emitWaiting(best->p);
+      pending_ = first;
+      dummy_blocks_ = 0;
+      state_ = State::On;
+      return;
+    }
+  }
+  if (settings_.corner == CornerMode::TransitionCircle && settings_.disc > 0)
+    notModelled(fmt::format("DISC={} (transition curve other than a circle)", settings_.disc));
+  MotionBlock lb = toBlock(selection_, line);
+  PlaneAxes pa = planeAxes(lb.plane);
+  lb.end[pa.applicate] = lb.start[pa.applicate];  // the applicate moves with the circle
+  emit(lb);
+  Element arc;
+  arc.arc = true;
+  arc.p0 = *t;
+  arc.p1 = first.compensated.p0;
+  arc.c = p1;
+  arc.ccw = s < 0;
+  MotionBlock ab = toBlock(selection_, arc);
+  ab.start[pa.applicate] = lb.end[pa.applicate];
+  ab.centre[pa.applicate] = ab.start[pa.applicate];
+  emit(ab);
+  emitWaiting(arc.p1);
+  pending_ = first;
+  dummy_blocks_ = 0;
+  state_ = State::On;
+}
+
+// KONT retraction with the end point behind the contour (details Q2): from the normal point of
+// the last element, an arc about its end point to the tangent point of the line through the
+// programmed end point (G450), or the last equidistant extended to that line (G451); then the
+// straight line to the programmed end point. Both belong to the G40 block.
+void RadiusCompensation::kontRetraction(const MotionBlock& m) {
+  Piece last = *pending_;
+  const Vec2 pe = last.programmed.p1;
+  const Vec2 p2 = toElement(m).p1;
+  const double r = std::fabs(settings_.radius), s = side();
+  std::optional<Vec2> t = tangentPoint(p2, pe, r, s, false);
+  if (!t)
+    raise(10756, "deactivation of tool radius compensation via KONT not possible at programmed end point");
+  Element line;
+  line.p0 = *t;
+  line.p1 = p2;
+  PlaneAxes pa = planeAxes(m.plane);
+  const Vec2 dir = (1.0 / geom::length(p2 - *t)) * (p2 - *t);
+  const double angle = std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(last.programmed.endTangent(), dir)))) * kDeg;
+  if (m.trc.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
+    std::optional<geom::Crossing> best;
+    for (const auto& x : geom::intersect(last.compensated, line))
+      if (x.u1 > 1 - kEps && x.u2 < 1 - kEps && (!best || geom::length(x.p - pe) < geom::length(best->p - pe)))
+        best = x;
+    if (best) {
+      last.compensated.p1 = best->p;
+      emitPiece(last);
+      emitWaiting(best->p);
+      line.p0 = best->p;
+      emit(toBlock(m, line));
+      pending_.reset();
+      state_ = State::Off;
+      return;
+    }
+  }
+  if (m.trc.corner == CornerMode::TransitionCircle && m.trc.disc > 0)
+    notModelled(fmt::format("DISC={} (transition curve other than a circle)", m.trc.disc));
+  emitPiece(last);
+  emitWaiting(last.compensated.p1);
+  Element arc;
+  arc.arc = true;
+  arc.p0 = last.compensated.p1;
+  arc.p1 = *t;
+  arc.c = pe;
+  arc.ccw = s < 0;
+  MotionBlock ab = toBlock(m, arc);
+  ab.start[pa.applicate] = ab.end[pa.applicate] = m.start[pa.applicate];
+  ab.centre[pa.applicate] = ab.start[pa.applicate];
+  emit(ab);
+  emit(toBlock(m, line));
+  pending_.reset();
+  state_ = State::Off;
 }
 
 void RadiusCompensation::finish() {

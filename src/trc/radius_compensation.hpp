@@ -48,6 +48,8 @@ class RadiusCompensation {
   void emitWaiting(geom::Vec2 at);
   Piece compensate(const place::MotionBlock& m) const;
   void corner(Piece& next);
+  void kontApproach(Piece& first);
+  void kontRetraction(const place::MotionBlock& m);
   void checkSameSettings(const place::MotionBlock& m) const;
   bool planeMotion(const place::MotionBlock& m) const;
   double side() const;  // +1: compensated to the left of travel, -1: right

@@ -1,0 +1,611 @@
+#!/usr/bin/env python3
+"""Differential test of ncoffset against LinuxCNC's standalone rs274ngc interpreter (`rs274`).
+
+Random closed contours of lines and arcs, in G17 and in G18, are written twice: as a LinuxCNC
+.ngc and as a SINUMERIK .MPF. Both interpreters run; rs274's canonical trace and ncoffset's CSV
+(`--coords wcs`) are parsed into the same segment list (end point, and for arcs centre and
+sense) and compared segment by segment to 1e-4 mm (rs274 prints 4 decimals).
+
+Mode 1 (default): no cutter compensation (G40). The programmed paths must agree exactly: an
+independent check of ncoffset's circle handling (I/J/K centres, G2/G3 sense, arcs beyond 180
+degrees) in G17 and G18.
+Mode 2 (--compensated): the same contours machined from outside with G41/G42, G450 and a tool
+radius, three laps; one full steady lap of the tool-centre path (all its corners, away from the
+approach and the retract) is compared. While ncoffset answers alarm 99010 for G41/G42 the run
+reports "ncoffset cannot compensate yet" and exits 77 (skip), never passes.
+
+rs274 is a test-time oracle only (installed by setup_rs274.sh into a cache directory); nothing
+of LinuxCNC is linked with or shipped in ncoffset.
+
+Exit status: 0 all agree; 1 a disagreement or an error; 77 skipped (rs274 cannot be had here,
+or mode 2 while ncoffset cannot compensate).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+
+SKIP = 77
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOL = 1e-4          # mm: rs274 prints 4 decimals
+EPS = 1e-9          # float noise on top of TOL
+TICKS = 10000       # all generated coordinates are integers in units of 1e-4 mm (exact decimals)
+TOOL_RADIUS_TICKS = 2 * TICKS   # mode 2: tool radius 2 mm
+LAPS_COMPENSATED = 3
+
+
+# --------------------------------------------------------------------------------------------
+# Segments: the common form both outputs are parsed into (work coordinates, mm)
+# --------------------------------------------------------------------------------------------
+
+@dataclass
+class Segment:
+    kind: str                      # 'G0' rapid, 'G1' line, 'ARC'
+    end: tuple                     # (x, y, z)
+    centre: tuple | None = None    # arcs: (x, y, z), in the plane of the arc's start point
+    ccw: bool | None = None        # arcs: counter-clockwise seen from + of the plane's normal axis
+    normal: str | None = None      # arcs: 'Z' (G17) or 'Y' (G18)
+    feed: float | None = None      # G1/ARC feed rate (mm/min)
+    src: str = ''                  # the raw row / trace line, for reports
+
+    def describe(self) -> str:
+        s = f"{self.kind} end=({_f(self.end)})"
+        if self.kind == 'ARC':
+            s += f" centre=({_f(self.centre)}) {'CCW' if self.ccw else 'CW'} about +{self.normal}"
+        if self.feed is not None:
+            s += f" F{self.feed:g}"
+        return s
+
+
+def _f(p) -> str:
+    return ', '.join(f"{v:.4f}" for v in p)
+
+
+def _close(p, q, tol=TOL) -> bool:
+    return all(abs(a - b) <= tol + EPS for a, b in zip(p, q))
+
+
+def compare_segments(got_nc: list[Segment], got_rs: list[Segment], check_feed=True) -> str | None:
+    """None if equal within TOL, else a description of the first difference."""
+    for k in range(min(len(got_nc), len(got_rs))):
+        a, b = got_nc[k], got_rs[k]
+        why = []
+        if a.kind != b.kind:
+            why.append('kind')
+        if not _close(a.end, b.end):
+            why.append('end point')
+        if a.kind == 'ARC' and b.kind == 'ARC':
+            if not _close(a.centre, b.centre):
+                why.append('centre')
+            if a.ccw != b.ccw:
+                why.append('sense')
+            if a.normal != b.normal:
+                why.append('plane')
+        if check_feed and a.kind != 'G0' and b.kind != 'G0' and a.feed is not None \
+                and b.feed is not None and abs(a.feed - b.feed) > 1e-6 * max(1.0, abs(b.feed)):
+            why.append('feed')
+        if why:
+            return (f"segment {k + 1}: {', '.join(why)} differ\n"
+                    f"    ncoffset: {a.describe()}    [{a.src}]\n"
+                    f"    rs274   : {b.describe()}    [{b.src}]")
+    if len(got_nc) != len(got_rs):
+        extra = got_nc[len(got_rs):] or got_rs[len(got_nc):]
+        who = 'ncoffset' if len(got_nc) > len(got_rs) else 'rs274'
+        return (f"segment count differs: ncoffset {len(got_nc)}, rs274 {len(got_rs)}; "
+                f"first extra ({who}): {extra[0].describe()} [{extra[0].src}]")
+    return None
+
+
+# --------------------------------------------------------------------------------------------
+# Parsers
+# --------------------------------------------------------------------------------------------
+
+_CANON = re.compile(r'\b(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SET_FEED_RATE|SELECT_PLANE)'
+                    r'\((.*)\)\s*$')
+
+
+def parse_rs274(text: str) -> list[Segment]:
+    """rs274's canonical trace -> segments.
+
+    STRAIGHT_TRAVERSE/STRAIGHT_FEED(x, y, z, a, b, c).
+    ARC_FEED(first_end, second_end, first_centre, second_centre, rotation, axis_end, a, b, c),
+    where (first, second, axis) is (X, Y, Z) in G17 and (Z, X, Y) in G18 (CANON_PLANE_XZ).
+    Orientation: the rotation is counted in the (first, second) frame, positive = from +first
+    towards +second. (X, Y, Z) and (Z, X, Y) are both cyclic, i.e. right-handed, so
+    first x second = +axis: rotation > 0 is counter-clockwise seen from +Z in G17 and from +Y in
+    G18, the same sense SINUMERIK's G3 has in both planes (and ncoffset's CSV motion G3: sense
+    seen from the + end of the axis the arc turns about). Hand example (checked by
+    hand_check() on every run): G18, from X20 Z0, `G3 X30 Z-10 I0 K-10` -> centre X20 Z-10;
+    the radius vector turns from +Z (0 deg in the Z,X frame) to +X (90 deg): a quarter turn
+    about +Y, counter-clockwise seen from +Y; rs274 prints ARC_FEED(-10.0000, 30.0000, -10.0000,
+    20.0000, 1, 0.0000, ...) = Z end, X end, Z centre, X centre, +1.
+    Feed rates come from SET_FEED_RATE (units/min with G21 G94).
+    """
+    segs: list[Segment] = []
+    pos = [0.0, 0.0, 0.0]
+    plane = 'XY'
+    feed = None
+    for line in text.splitlines():
+        m = _CANON.search(line)
+        if not m:
+            continue
+        name, args = m.group(1), m.group(2)
+        if name == 'SELECT_PLANE':
+            plane = {'CANON_PLANE_XY': 'XY', 'CANON_PLANE_XZ': 'XZ',
+                     'CANON_PLANE_YZ': 'YZ'}[args.strip()]
+            continue
+        v = [float(s) for s in args.split(',')]
+        if name == 'SET_FEED_RATE':
+            feed = v[0]
+            continue
+        raw = line.strip()
+        if name in ('STRAIGHT_TRAVERSE', 'STRAIGHT_FEED'):
+            end = (v[0], v[1], v[2])
+            kind = 'G0' if name == 'STRAIGHT_TRAVERSE' else 'G1'
+            segs.append(Segment(kind, end, feed=None if kind == 'G0' else feed, src=raw))
+        else:
+            fe, se, fc, sc, rot, ae = v[0], v[1], v[2], v[3], int(v[4]), v[5]
+            if abs(rot) != 1:
+                raise ValueError(f"rs274 arc with {rot} turns (generator makes none): {raw}")
+            if plane == 'XY':
+                end, centre, normal = (fe, se, ae), (fc, sc, pos[2]), 'Z'
+            elif plane == 'XZ':   # first = Z, second = X, axis = Y
+                end, centre, normal = (se, ae, fe), (sc, pos[1], fc), 'Y'
+            else:
+                raise ValueError(f"plane {plane} is not compared: {raw}")
+            segs.append(Segment('ARC', end, centre, rot > 0, normal, feed, raw))
+        pos = list(segs[-1].end)
+    return segs
+
+
+def parse_ncoffset(text: str, plane_of_line) -> list[Segment]:
+    """ncoffset's CSV `line,motion,x,y,z,cx,cy,cz,feed` -> segments (motion G2/G3: sense seen
+    from + of the axis the arc turns about; with --coords wcs no mirroring frame applies)."""
+    segs: list[Segment] = []
+    lines = text.splitlines()
+    if not lines or lines[0].strip() != 'line,motion,x,y,z,cx,cy,cz,feed':
+        raise ValueError(f"unexpected ncoffset CSV header: {lines[:1]}")
+    for row in lines[1:]:
+        if not row.strip():
+            continue
+        c = row.split(',')
+        line_no, motion = int(c[0]), c[1]
+        end = (float(c[2]), float(c[3]), float(c[4]))
+        feed = float(c[8]) if c[8] else None
+        if motion == 'G0':
+            segs.append(Segment('G0', end, src=row))
+        elif motion == 'G1':
+            segs.append(Segment('G1', end, feed=feed, src=row))
+        elif motion in ('G2', 'G3'):
+            centre = (float(c[5]), float(c[6]), float(c[7]))
+            segs.append(Segment('ARC', end, centre, motion == 'G3',
+                                plane_of_line(line_no), feed, row))
+        else:
+            raise ValueError(f"unexpected ncoffset motion {motion!r}: {row}")
+        segs[-1].line = line_no   # type: ignore[attr-defined]
+    return segs
+
+
+# --------------------------------------------------------------------------------------------
+# Contour generation (plane coordinates: a = abscissa, o = ordinate; integers in 1e-4 mm)
+# --------------------------------------------------------------------------------------------
+
+@dataclass
+class Element:
+    kind: str                        # 'line' or 'arc'
+    end: tuple                       # (a, o) ticks
+    centre: tuple | None = None      # (a, o) ticks, absolute
+    ccw: bool = False                # counter-clockwise in the (a, o) frame
+    feed: int | None = None          # F word on this block, if any
+
+
+@dataclass
+class Contour:
+    index: int
+    plane: str                       # 'G17' or 'G18'
+    ccw: bool                        # traversal sense of the contour
+    level: int                       # applicate (Z in G17, Y in G18), ticks
+    start: tuple                     # contour start point P0 (a, o)
+    approach_from: tuple             # A: outside, where the approach line starts
+    elements: list = field(default_factory=list)
+    feed: int = 500
+    convex: int = 0
+    concave: int = 0
+    arcs_over_180: int = 0
+
+
+def _unit(x, y):
+    n = math.hypot(x, y)
+    return x / n, y / n
+
+
+def _tangent_at(el_start, el: Element, at_end: bool):
+    if el.kind == 'line':
+        return _unit(el.end[0] - el_start[0], el.end[1] - el_start[1])
+    p = el.end if at_end else el_start
+    rx, ry = p[0] - el.centre[0], p[1] - el.centre[1]
+    return _unit(-ry, rx) if el.ccw else _unit(ry, -rx)
+
+
+def generate(index: int, seed: int) -> Contour:
+    rng = random.Random(seed * 100003 + index)
+    plane = 'G17' if index % 2 == 0 else 'G18'
+    ccw = rng.random() < 0.5
+    while True:
+        n = rng.randint(4, 8)
+        ca, co = rng.uniform(-30, 30), rng.uniform(-30, 30)
+        th0 = rng.uniform(0, 2 * math.pi)
+        step = 2 * math.pi / n
+        pts = []
+        for i in range(n):
+            th = th0 + i * step + rng.uniform(-0.3, 0.3) * step
+            r = rng.uniform(22, 60)
+            pts.append((round((ca + r * math.cos(th)) * TICKS), round((co + r * math.sin(th)) * TICKS)))
+        if not ccw:
+            pts.reverse()
+        if min(math.dist(pts[i], pts[(i + 1) % n]) for i in range(n)) >= 12 * TICKS:
+            break
+    elements = []
+    big_used = False
+    for i in range(n):
+        p, q = pts[i], pts[(i + 1) % n]
+        dx, dy = q[0] - p[0], q[1] - p[1]
+        length = math.hypot(dx, dy)
+        left = (-dy / length, dx / length)
+        inward = left if ccw else (-left[0], -left[1])     # towards the contour's interior
+        u = rng.random()
+        if u < 0.40:
+            elements.append(Element('line', q))
+            continue
+        if u < 0.72:
+            kind, sweep = 'out', math.radians(rng.uniform(30, 150))
+        elif u < 0.92 or big_used:
+            kind, sweep = 'in', math.radians(rng.uniform(20, 80))
+        else:
+            kind, sweep, big_used = 'out', math.radians(rng.uniform(200, 250)), True
+        radius = length / (2 * math.sin(sweep / 2))
+        h = radius * math.cos(sweep / 2)          # < 0 beyond 180 degrees: centre outside
+        side = 1 if kind == 'out' else -1         # outward bulge: centre on the interior side
+        centre = (round((p[0] + q[0]) / 2 + side * h * inward[0]),
+                  round((p[1] + q[1]) / 2 + side * h * inward[1]))
+        arc_ccw = ccw if kind == 'out' else not ccw
+        elements.append(Element('arc', q, centre, arc_ccw))
+    for el in elements:
+        if rng.random() < 0.25:
+            el.feed = rng.choice([300, 400, 600, 800, 1000])
+    c = Contour(index, plane, ccw, -rng.randint(0, 50000), pts[0], (0, 0), elements,
+                feed=rng.choice([200, 500, 750]))
+    # Corners: turning towards the interior is convex (an outside tool goes round it on an arc).
+    starts = [pts[i] for i in range(n)]
+    for i in range(n):
+        t1 = _tangent_at(starts[i], elements[i], True)
+        j = (i + 1) % n
+        t2 = _tangent_at(starts[j], elements[j], False)
+        cross = t1[0] * t2[1] - t1[1] * t2[0]
+        if abs(cross) < 1e-6 and t1[0] * t2[0] + t1[1] * t2[1] > 0:
+            continue
+        if (cross > 0) == ccw:
+            c.convex += 1
+        else:
+            c.concave += 1
+    for i, el in enumerate(elements):
+        if el.kind == 'arc':
+            p = starts[i]
+            cross = (p[0] - el.centre[0]) * (el.end[1] - el.centre[1]) - \
+                    (p[1] - el.centre[1]) * (el.end[0] - el.centre[0])
+            if (cross > 0) != el.ccw:
+                c.arcs_over_180 += 1
+    # Approach from outside the contour: 12 mm out from P0 along the first element's outward
+    # normal, 4 mm back along its tangent.
+    t = _tangent_at(pts[0], elements[0], False)
+    left = (-t[1], t[0])
+    out = (-left[0], -left[1]) if ccw else left
+    c.approach_from = (round(pts[0][0] + (12 * out[0] - 4 * t[0]) * TICKS),
+                       round(pts[0][1] + (12 * out[1] - 4 * t[1]) * TICKS))
+    return c
+
+
+# --------------------------------------------------------------------------------------------
+# Program writers. Plane mapping: G17 (a, o, applicate) = (X, Y, Z), centre words I J;
+# G18 (a, o, applicate) = (Z, X, Y), centre words K (for a = Z) and I (for o = X). In both,
+# G3 is counter-clockwise in the (a, o) frame seen from +applicate (Z x X = +Y).
+# --------------------------------------------------------------------------------------------
+
+def num(t: int) -> str:
+    sign = '-' if t < 0 else ''
+    t = abs(t)
+    return f"{sign}{t // TICKS}.{t % TICKS:04d}"
+
+
+AXES = {'G17': ('X', 'Y', 'Z', 'I', 'J'), 'G18': ('Z', 'X', 'Y', 'K', 'I')}
+
+
+def blocks(c: Contour, compensated: bool, dialect: str):
+    """The program as a list of (text, role) lines, role = None or ('el', lap, k)."""
+    A, O, APP, CA, CO = AXES[c.plane]
+    a0, o0 = c.approach_from
+    out = []
+    if dialect == 'ngc':
+        out.append((f"(ncoffset differential contour {c.index} {c.plane})", None))
+        out.append((f"G21 G90 G94 G40 G49 {c.plane}", None))
+    else:
+        out.append((f"; ncoffset differential contour {c.index} {c.plane}", None))
+        out.append((f"G71 G90 G94 G40 {c.plane}", None))
+        if compensated:
+            out.append((f"$TC_DP1[1,1]=120 $TC_DP6[1,1]={num(TOOL_RADIUS_TICKS)}", None))
+            out.append(("T1 D1", None))
+            out.append(("G450", None))
+    out.append((f"G0 {A}{num(a0)} {O}{num(o0)} {APP}5", None))
+    out.append((f"G1 {APP}{num(c.level)} F{c.feed}", None))
+    comp = ''
+    if compensated:
+        side = 'G42' if c.ccw else 'G41'          # right of a CCW contour = outside
+        comp = (f"{side}.1 D{num(2 * TOOL_RADIUS_TICKS)} " if dialect == 'ngc' else f"{side} ")
+    out.append((f"{comp}G1 {A}{num(c.start[0])} {O}{num(c.start[1])}", None))
+    laps = LAPS_COMPENSATED if compensated else 1
+    for lap in range(laps):
+        prev = c.start
+        for k, el in enumerate(c.elements):
+            f = f" F{el.feed}" if el.feed else ''
+            if el.kind == 'line':
+                text = f"G1 {A}{num(el.end[0])} {O}{num(el.end[1])}{f}"
+            else:
+                g = 'G3' if el.ccw else 'G2'
+                text = (f"{g} {A}{num(el.end[0])} {O}{num(el.end[1])} "
+                        f"{CA}{num(el.centre[0] - prev[0])} {CO}{num(el.centre[1] - prev[1])}{f}")
+            out.append((text, ('el', lap, k)))
+            prev = el.end
+    out.append((f"{'G40 ' if compensated else ''}G1 {A}{num(a0)} {O}{num(o0)}", None))
+    out.append((f"G0 {APP}5", None))
+    out.append(("M2" if dialect == 'ngc' else "M30", None))
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# Running the two interpreters
+# --------------------------------------------------------------------------------------------
+
+class Runner:
+    def __init__(self, ncoffset: str, rs274: str, workdir: str):
+        self.ncoffset, self.rs274, self.workdir = ncoffset, rs274, workdir
+        self.rs_home = os.path.join(workdir, 'rs274-home')     # rs274 truncates $HOME/.tool.mmap
+        os.makedirs(self.rs_home, exist_ok=True)
+        self.tool_table = os.path.join(workdir, 'empty.tbl')   # tools come from G41.1 D (diameter)
+        open(self.tool_table, 'w').close()
+        self.env = dict(os.environ, HOME=self.rs_home,
+                        LD_LIBRARY_PATH=os.path.join(os.path.dirname(os.path.dirname(rs274)), 'lib'))
+
+    def run_rs274(self, ngc_path: str) -> tuple[int, str, str]:
+        out = ngc_path + '.canon'
+        p = subprocess.run([self.rs274, '-g', '-t', self.tool_table, '-v',
+                            os.path.join(self.rs_home, 'params.var'), ngc_path, out],
+                           env=self.env, stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                           timeout=60)
+        text = open(out).read() if os.path.exists(out) else ''
+        # rs274 -g exits 0 even after some errors; its error text is on stderr ("executing" and
+        # the var-file notice are always there).
+        err = '\n'.join(l for l in p.stderr.splitlines()
+                        if l.strip() and l.strip() != 'executing'
+                        and not l.startswith('link (updating variable file)'))
+        return p.returncode, text, err
+
+    def run_ncoffset(self, mpf_path: str) -> tuple[int, str, str]:
+        p = subprocess.run([self.ncoffset, '--coords', 'wcs', mpf_path], stdin=subprocess.DEVNULL,
+                           capture_output=True, text=True, timeout=60)
+        return p.returncode, p.stdout, p.stderr
+
+
+def write_programs(workdir: str, name: str, ngc_lines, mpf_lines):
+    ngc = os.path.join(workdir, name + '.ngc')
+    mpf = os.path.join(workdir, name.upper() + '.MPF')
+    with open(ngc, 'w') as f:
+        f.write('\n'.join(t for t, _ in ngc_lines) + '\n')
+    with open(mpf, 'w') as f:
+        f.write('\n'.join(t for t, _ in mpf_lines) + '\n')
+    return ngc, mpf
+
+
+def plane_lookup(mpf_lines):
+    """CSV line number -> normal axis of the plane active there (plane is set once per program)."""
+    plane = 'Z'
+    for t, _ in mpf_lines:
+        if 'G18' in t.split():
+            plane = 'Y'
+    return lambda _line: plane
+
+
+# --------------------------------------------------------------------------------------------
+# Hand check: the field mapping of both parsers against values derived by hand
+# --------------------------------------------------------------------------------------------
+
+HAND = {
+    # G17: from X20 Y0, G3 X30 Y10 I0 J10: centre X20 Y10; radius vector -Y -> +X: CCW about +Z.
+    #      then G2 X40 Y0 I0 J-10: centre X30 Y0; +Y -> +X: clockwise about +Z.
+    'G17': (["G0 X10 Y0 Z0", "G1 X20 F100", "G3 X30 Y10 I0 J10", "G2 X40 Y0 I0 J-10"],
+            [Segment('G0', (10, 0, 0)), Segment('G1', (20, 0, 0), feed=100),
+             Segment('ARC', (30, 10, 0), (20, 10, 0), True, 'Z', 100),
+             Segment('ARC', (40, 0, 0), (30, 0, 0), False, 'Z', 100)]),
+    # G18: from X20 Z0, G3 X30 Z-10 I0 K-10: centre X20 Z-10; radius vector +Z -> +X, a quarter
+    #      turn about +Y (Z x X = Y): CCW seen from +Y. Then G2 X20 Z-20 I-10 K0: centre X20
+    #      Z-10; +X -> -Z the long way round (270 degrees), clockwise seen from +Y.
+    'G18': (["G0 X10 Y3 Z0", "G1 X20 F100", "G3 X30 Z-10 I0 K-10", "G2 X20 Z-20 I-10 K0"],
+            [Segment('G0', (10, 3, 0)), Segment('G1', (20, 3, 0), feed=100),
+             Segment('ARC', (30, 3, -10), (20, 3, -10), True, 'Y', 100),
+             Segment('ARC', (20, 3, -20), (20, 3, -10), False, 'Y', 100)]),
+}
+
+
+def hand_check(runner: Runner) -> list[str]:
+    problems = []
+    for plane, (body, expected) in HAND.items():
+        ngc_lines = [(f"G21 G90 G94 G40 G49 {plane}", None)] + [(b, None) for b in body] + [("M2", None)]
+        mpf_lines = [(f"G71 G90 G94 {plane}", None)] + [(b, None) for b in body] + [("M30", None)]
+        ngc, mpf = write_programs(runner.workdir, f"hand_{plane}", ngc_lines, mpf_lines)
+        rc, text, err = runner.run_rs274(ngc)
+        if rc != 0 or err:
+            problems.append(f"hand check {plane}: rs274 failed ({rc}): {err}")
+            continue
+        diff = compare_segments(parse_rs274(text), expected)
+        if diff:
+            problems.append(f"hand check {plane}: rs274 trace parsed against the hand values "
+                            f"(left = parsed rs274, right = hand):\n  {diff}")
+        rc, text, err = runner.run_ncoffset(mpf)
+        if rc != 0:
+            problems.append(f"hand check {plane}: ncoffset failed ({rc}): {err.strip()}")
+            continue
+        diff = compare_segments(parse_ncoffset(text, plane_lookup(mpf_lines)), expected)
+        if diff:
+            problems.append(f"hand check {plane}: ncoffset CSV against the hand values "
+                            f"(left = ncoffset, right = hand):\n  {diff}")
+    return problems
+
+
+# --------------------------------------------------------------------------------------------
+# Mode 2: one steady lap of the compensated path
+# --------------------------------------------------------------------------------------------
+
+def steady_lap(segs: list[Segment], marker: tuple) -> list[Segment] | None:
+    """Segments after the first arrival at `marker` up to and including the second one."""
+    hits = [i for i, s in enumerate(segs) if _close(s.end, marker, 2 * TOL)]
+    if len(hits) < 2:
+        return None
+    return segs[hits[0] + 1:hits[1] + 1]
+
+
+# --------------------------------------------------------------------------------------------
+
+def find_rs274(args) -> str | None:
+    if args.rs274:
+        return args.rs274
+    setup = os.path.join(HERE, 'setup_rs274.sh')
+    cmd = ['bash', setup] + ([args.rs274_cache] if args.rs274_cache else [])
+    p = subprocess.run(cmd, stdin=subprocess.DEVNULL, capture_output=True, text=True)
+    if p.returncode == SKIP:
+        print(p.stderr.strip() or "setup_rs274.sh: rs274 cannot be had here", file=sys.stderr)
+        return None
+    if p.returncode != 0:
+        raise SystemExit(f"setup_rs274.sh failed ({p.returncode}):\n{p.stderr}")
+    return p.stdout.strip().splitlines()[-1]
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    ap.add_argument('--ncoffset', required=True, help='path of the ncoffset binary')
+    ap.add_argument('--rs274', help='path of rs274 (default: installed by setup_rs274.sh)')
+    ap.add_argument('--rs274-cache', help='cache directory handed to setup_rs274.sh')
+    ap.add_argument('-n', '--count', type=int, default=40, help='number of contours (default 40)')
+    ap.add_argument('--seed', type=int, default=1, help='generator seed (default 1)')
+    ap.add_argument('--compensated', action='store_true',
+                    help='mode 2: G41/G42 + G450 with a 2 mm tool, compare the tool-centre path')
+    ap.add_argument('--keep', help='write the programs and outputs here (kept afterwards)')
+    ap.add_argument('-v', '--verbose', action='store_true')
+    args = ap.parse_args()
+
+    t_start = time.monotonic()
+    rs274 = find_rs274(args)
+    if rs274 is None:
+        print("differential_rs274: SKIP: LinuxCNC's rs274 is not available")
+        return SKIP
+    workdir = args.keep or tempfile.mkdtemp(prefix='ncoffset-differential-')
+    os.makedirs(workdir, exist_ok=True)
+    runner = Runner(os.path.abspath(args.ncoffset), rs274, workdir)
+    failures = []
+    keep = bool(args.keep)
+    try:
+        problems = hand_check(runner)
+        if problems:
+            print('\n'.join(problems))
+            print("differential_rs274: FAIL: the hand check of the trace/CSV field mapping failed")
+            keep = True
+            return 1
+
+        mode = 'compensated (G41/G42, G450, r=2 mm)' if args.compensated else 'programmed path (G40)'
+        totals = dict(contours=0, segments=0, contour_segments=0, arcs=0, over180=0, convex=0,
+                      concave=0, g17=0, g18=0)
+        cannot_compensate = None
+        for i in range(args.count):
+            c = generate(i, args.seed)
+            ngc_lines = blocks(c, args.compensated, 'ngc')
+            mpf_lines = blocks(c, args.compensated, 'mpf')
+            name = f"c{i:03d}_{c.plane}"
+            ngc, mpf = write_programs(workdir, name, ngc_lines, mpf_lines)
+            rc, rs_text, rs_err = runner.run_rs274(ngc)
+            if rc != 0 or rs_err:
+                failures.append(f"{name}: rs274 refused the program ({rc}): {rs_err}\n    {ngc}")
+                continue
+            rc, nc_text, nc_err = runner.run_ncoffset(mpf)
+            if args.compensated and rc == 2 and 'alarm 99010' in nc_err:
+                # Go on with rs274 alone: it still shows that the programs are valid.
+                cannot_compensate = nc_err.strip().splitlines()[0]
+                continue
+            if rc != 0:
+                failures.append(f"{name}: ncoffset failed ({rc}): {nc_err.strip()}\n    {mpf}")
+                continue
+            with open(os.path.join(workdir, name + '.csv'), 'w') as f:
+                f.write(nc_text)
+            rs = parse_rs274(rs_text)
+            nc = parse_ncoffset(nc_text, plane_lookup(mpf_lines))
+            if args.compensated:
+                # The end of lap 2's first element (ncoffset's last row of that block) marks
+                # one full lap in both outputs, away from the approach and the retract.
+                line_no = 1 + next(k for k, (_, role) in enumerate(mpf_lines) if role == ('el', 1, 0))
+                rows = [s for s in nc if getattr(s, 'line') == line_no]
+                if not rows:
+                    failures.append(f"{name}: ncoffset wrote no row for line {line_no}\n    {mpf}")
+                    continue
+                marker = rows[-1].end
+                nc_lap, rs_lap = steady_lap(nc, marker), steady_lap(rs, marker)
+                if nc_lap is None or rs_lap is None:
+                    failures.append(f"{name}: the lap marker ({_f(marker)}) occurs fewer than twice "
+                                    f"in {'ncoffset' if nc_lap is None else 'rs274'}'s path\n"
+                                    f"    {ngc}\n    {mpf}")
+                    continue
+                nc, rs = nc_lap, rs_lap
+            diff = compare_segments(nc, rs)
+            if diff:
+                failures.append(f"{name} ({c.plane}, {'CCW' if c.ccw else 'CW'} contour): {diff}\n"
+                                f"    {ngc}\n    {mpf}")
+                continue
+            totals['contours'] += 1
+            totals[c.plane.lower()] += 1
+            totals['segments'] += len(nc)
+            totals['contour_segments'] += len(c.elements)
+            totals['arcs'] += sum(1 for e in c.elements if e.kind == 'arc')
+            totals['over180'] += c.arcs_over_180
+            totals['convex'] += c.convex
+            totals['concave'] += c.concave
+            if args.verbose:
+                print(f"{name}: {len(nc)} segments agree")
+        elapsed = time.monotonic() - t_start
+        for f in failures:
+            print(f"DISAGREEMENT {f}")
+        if cannot_compensate and not failures:
+            print(f"differential_rs274: SKIP: ncoffset cannot compensate yet ({cannot_compensate}); "
+                  f"rs274 ran all {args.count} compensated programs ({elapsed:.1f} s)")
+            return SKIP
+        t = totals
+        print(f"differential_rs274 [{mode}, seed {args.seed}]: {t['contours']} of {args.count} contours "
+              f"agree ({t['g17']} G17, {t['g18']} G18): {t['segments']} segments compared, "
+              f"{t['contour_segments']} contour elements ({t['arcs']} arcs, {t['over180']} over 180 deg; "
+              f"{t['convex']} convex and {t['concave']} concave corners) in {elapsed:.1f} s")
+        print(f"differential: {t['contours']} passed, {len(failures)} failed")
+        return 1 if failures else 0
+    finally:
+        if failures or keep:
+            print(f"programs kept in {workdir}")
+        else:
+            shutil.rmtree(workdir, ignore_errors=True)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
