@@ -97,18 +97,45 @@ bool RadiusCompensation::planeMotion(const MotionBlock& m) const {
   return geom::length(e.p1 - e.p0) > 1e-12;
 }
 
-RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m) const {
+RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, double r0,
+                                                          double r1) const {
   Piece p;
   p.block = m;
   p.programmed = toElement(m);
-  double r = std::fabs(settings_.radius);
+  p.r0 = r0;
+  p.r1 = r1;
+  double r = std::fmax(r0, r1);
   auto eq = geom::equidistant(p.programmed, side() * r);
   if (!eq)
     raise(10751, fmt::format("danger of collision due to tool radius compensation: the arc radius "
                              "{} is not larger than the compensation value {} on its inside",
                              p.programmed.radius(), r));
   p.compensated = *eq;
+  if (r0 != r1) {
+    // Only lines get here: from start + R_old n to end + R_new n.
+    Vec2 n = side() * geom::leftNormal(p.programmed.startTangent());
+    p.compensated.p0 = p.programmed.p0 + r0 * n;
+    p.compensated.p1 = p.programmed.p1 + r1 * n;
+  }
   return p;
+}
+
+Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const {
+  double r = at_end ? p.r1 : p.r0;
+  if (p.r0 == p.r1) return p.compensated;
+  Element e = *geom::equidistant(p.programmed, side() * r);  // a line: always exists
+  return e;
+}
+
+RadiusCompensation::Piece RadiusCompensation::compensateWithChange(const MotionBlock& m) {
+  const double old_r = std::fabs(settings_.radius), new_r = std::fabs(m.trc.radius);
+  if (std::fabs(old_r - new_r) < 1e-12) return compensate(m);
+  if ((m.trc.radius < 0) != (settings_.radius < 0))
+    notModelled("a change of the compensation value that changes its sign (side) while active");
+  if (m.motion == Motion::G2 || m.motion == Motion::G3)
+    notModelled("a change of the compensation value in a circle block (a spiral, details Q8)");
+  settings_.radius = m.trc.radius;
+  return compensate(m, old_r, new_r);
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) { emit(toBlock(p.block, p.compensated)); }
@@ -128,8 +155,6 @@ void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
   if (m.trc.mode != settings_.mode)
     notModelled(fmt::format("changing from G{} to G{} while compensation is active", settings_.mode,
                             m.trc.mode));
-  if (std::fabs(m.trc.radius - settings_.radius) > 1e-12)
-    notModelled("a change of the compensation value (D, wear or OFFN) while compensation is active");
   if (m.trc.collision == CollisionCheck::Cdon) notModelled("CDON bottleneck detection");
   if (m.plane != selection_.plane)
     raise(10757, "change of compensation plane not possible while tool radius compensation is active");
@@ -243,7 +268,7 @@ void RadiusCompensation::motion(const MotionBlock& m) {
         blockWithoutMotion();
         return;
       }
-      Piece next = compensate(m);
+      Piece next = compensateWithChange(m);
       corner(next);
       dummy_blocks_ = 0;
       return;
@@ -270,7 +295,7 @@ void RadiusCompensation::corner(Piece& next) {
     // Inside corner: both elements end at the intersection of their equidistants; of several,
     // the one nearest the start of the next block (W1 2.4.3).
     std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(cur.compensated, next.compensated))
+    for (const auto& x : geom::intersect(cornerEquidistant(cur, true), cornerEquidistant(next, false)))
       if (x.u1 > -kEps && x.u1 < 1 + kEps && x.u2 > -kEps && x.u2 < 1 + kEps &&
           (!best || x.u2 < best->u2))
         best = x;
@@ -294,7 +319,7 @@ void RadiusCompensation::corner(Piece& next) {
     notModelled(fmt::format("DISC={} (transition curve other than a circle)", settings_.disc));
   if (!circle) {
     std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(cur.compensated, next.compensated))
+    for (const auto& x : geom::intersect(cornerEquidistant(cur, true), cornerEquidistant(next, false)))
       if (x.u1 > 1 - kEps && x.u2 < kEps &&
           (!best || geom::length(x.p - p) < geom::length(best->p - p)))
         best = x;

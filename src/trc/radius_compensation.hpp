@@ -39,6 +39,8 @@ class RadiusCompensation {
     place::MotionBlock block;
     geom::Element programmed;
     geom::Element compensated;
+    double r0 = 0, r1 = 0;  // compensation value at the start and the end (a D change in a
+                            // line spreads the change over the block, details Q8)
   };
 
   geom::Element toElement(const place::MotionBlock& m) const;
@@ -46,7 +48,16 @@ class RadiusCompensation {
   void emit(const place::MotionBlock& m) { out_.motion(m); }
   void emitPiece(const Piece& p);
   void emitWaiting(geom::Vec2 at);
-  Piece compensate(const place::MotionBlock& m) const;
+  Piece compensate(const place::MotionBlock& m, double r0, double r1) const;
+  Piece compensate(const place::MotionBlock& m) const {
+    double r = std::fabs(settings_.radius);
+    return compensate(m, r, r);
+  }
+  // The equidistant at the constant value the corner calculation uses (details Q8: the end
+  // value of the first element, the start value of the second).
+  geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
+  // A new compensation value in a line spreads over that block (details Q8).
+  Piece compensateWithChange(const place::MotionBlock& m);
   void corner(Piece& next);
   void kontApproach(Piece& first);
   void kontRetraction(const place::MotionBlock& m);

@@ -237,6 +237,37 @@ def _tangent_at(el_start, el: Element, at_end: bool):
     return _unit(-ry, rx) if el.ccw else _unit(ry, -rx)
 
 
+def exact_arc(p, centre_wanted, sweep_signed):
+    """An arc from the lattice point p turning sweep_signed (radians, > 0 counter-clockwise)
+    about roughly centre_wanted, whose centre C and end point Q are lattice points with
+    |p - C| == |Q - C| EXACTLY (integer ticks). Start and end radii that differ by even 1e-4 mm
+    shift a compensated corner by more than the tolerance (the two interpreters may take either
+    radius), so they must be equal. Gaussian integers: with s = w1*w2 and e = w1*conj(w2)*i^k,
+    |s| = |e| = |w1||w2| and arg(e) - arg(s) = k*90deg - 2*arg(w2); pick w2 (small) for
+    the sweep, then w1 for the start direction and radius; C = p - s, Q = C + e. Q lands within
+    about 0.2 mm of the wanted end point (the shape only needs to be roughly as wanted)."""
+    sx, sy = p[0] - centre_wanted[0], p[1] - centre_wanted[1]
+    radius, alpha = math.hypot(sx, sy), math.atan2(sy, sx)
+
+    # arg(w2) = -sweep/2 modulo 45 degrees (the rest is i^k and symmetry): a w2 in the first
+    # octant, m >= k >= 0, m <= 300.
+    target = (-sweep_signed / 2) % (math.pi / 4)
+    m, k = min(((mm, round(mm * math.tan(target))) for mm in range(1, 301)),
+               key=lambda w: abs(math.atan2(w[1], w[0]) - target))
+    arg2 = math.atan2(k, m)
+    quarter = round((sweep_signed + 2 * arg2) / (math.pi / 2)) % 4
+    mod1 = radius / math.hypot(m, k)
+    w1 = (round(mod1 * math.cos(alpha - arg2)), round(mod1 * math.sin(alpha - arg2)))
+    s = (w1[0] * m - w1[1] * k, w1[0] * k + w1[1] * m)           # w1 * w2
+    e = (w1[0] * m + w1[1] * k, -w1[0] * k + w1[1] * m)          # w1 * conj(w2)
+    for _ in range(quarter):                                      # * i^quarter
+        e = (-e[1], e[0])
+    c = (p[0] - s[0], p[1] - s[1])
+    q = (c[0] + e[0], c[1] + e[1])
+    assert (p[0] - c[0]) ** 2 + (p[1] - c[1]) ** 2 == (q[0] - c[0]) ** 2 + (q[1] - c[1]) ** 2
+    return c, q
+
+
 def generate(index: int, seed: int) -> Contour:
     rng = random.Random(seed * 100003 + index)
     plane = 'G17' if index % 2 == 0 else 'G18'
@@ -256,16 +287,20 @@ def generate(index: int, seed: int) -> Contour:
         if min(math.dist(pts[i], pts[(i + 1) % n]) for i in range(n)) >= 12 * TICKS:
             break
     elements = []
+    starts = []
     big_used = False
+    cur = pts[0]
     for i in range(n):
-        p, q = pts[i], pts[(i + 1) % n]
+        p, q = cur, pts[(i + 1) % n]
+        starts.append(p)
         dx, dy = q[0] - p[0], q[1] - p[1]
         length = math.hypot(dx, dy)
         left = (-dy / length, dx / length)
         inward = left if ccw else (-left[0], -left[1])     # towards the contour's interior
         u = rng.random()
-        if u < 0.40:
+        if u < 0.40 or i == n - 1:                # the closing element is a line: exact closure
             elements.append(Element('line', q))
+            cur = q
             continue
         if u < 0.72:
             kind, sweep = 'out', math.radians(rng.uniform(30, 150))
@@ -276,17 +311,17 @@ def generate(index: int, seed: int) -> Contour:
         radius = length / (2 * math.sin(sweep / 2))
         h = radius * math.cos(sweep / 2)          # < 0 beyond 180 degrees: centre outside
         side = 1 if kind == 'out' else -1         # outward bulge: centre on the interior side
-        centre = (round((p[0] + q[0]) / 2 + side * h * inward[0]),
-                  round((p[1] + q[1]) / 2 + side * h * inward[1]))
+        centre = ((p[0] + q[0]) / 2 + side * h * inward[0],
+                  (p[1] + q[1]) / 2 + side * h * inward[1])
         arc_ccw = ccw if kind == 'out' else not ccw
-        elements.append(Element('arc', q, centre, arc_ccw))
+        centre, cur = exact_arc(p, centre, sweep if arc_ccw else -sweep)
+        elements.append(Element('arc', cur, centre, arc_ccw))
     for el in elements:
         if rng.random() < 0.25:
             el.feed = rng.choice([300, 400, 600, 800, 1000])
     c = Contour(index, plane, ccw, -rng.randint(0, 50000), pts[0], (0, 0), elements,
                 feed=rng.choice([200, 500, 750]))
     # Corners: turning towards the interior is convex (an outside tool goes round it on an arc).
-    starts = [pts[i] for i in range(n)]
     for i in range(n):
         t1 = _tangent_at(starts[i], elements[i], True)
         j = (i + 1) % n
