@@ -321,6 +321,8 @@ def generate(index: int, seed: int) -> Contour:
             el.feed = rng.choice([300, 400, 600, 800, 1000])
     c = Contour(index, plane, ccw, -rng.randint(0, 50000), pts[0], (0, 0), elements,
                 feed=rng.choice([200, 500, 750]))
+    if elements[0].feed is None:      # the same feed in every lap (mode 2 compares lap 2)
+        elements[0].feed = c.feed
     # Corners: turning towards the interior is convex (an outside tool goes round it on an arc).
     for i in range(n):
         t1 = _tangent_at(starts[i], elements[i], True)
@@ -591,21 +593,21 @@ def main() -> int:
             rs = parse_rs274(rs_text)
             nc = parse_ncoffset(nc_text, plane_lookup(mpf_lines))
             if args.compensated:
-                # The end of lap 2's first element (ncoffset's last row of that block) marks
-                # one full lap in both outputs, away from the approach and the retract.
-                line_no = 1 + next(k for k, (_, role) in enumerate(mpf_lines) if role == ('el', 1, 0))
-                rows = [s for s in nc if getattr(s, 'line') == line_no]
-                if not rows:
-                    failures.append(f"{name}: ncoffset wrote no row for line {line_no}\n    {mpf}")
+                # One full steady lap in both outputs: between two consecutive passes through a
+                # point of lap 2 that both paths contain (the first such end point of ncoffset's
+                # rows for lap 2), away from the approach and the retract.
+                lap2 = {1 + k for k, (_, role) in enumerate(mpf_lines) if role and role[1] == 1}
+                laps = None
+                for cand in (sg for sg in nc if getattr(sg, 'line') in lap2):
+                    nc_lap, rs_lap = steady_lap(nc, cand.end), steady_lap(rs, cand.end)
+                    if nc_lap is not None and rs_lap is not None:
+                        laps = (nc_lap, rs_lap)
+                        break
+                if laps is None:
+                    failures.append(f"{name}: no point of ncoffset's lap 2 recurs in rs274's path "
+                                    f"(the compensated paths differ everywhere)\n    {ngc}\n    {mpf}")
                     continue
-                marker = rows[-1].end
-                nc_lap, rs_lap = steady_lap(nc, marker), steady_lap(rs, marker)
-                if nc_lap is None or rs_lap is None:
-                    failures.append(f"{name}: the lap marker ({_f(marker)}) occurs fewer than twice "
-                                    f"in {'ncoffset' if nc_lap is None else 'rs274'}'s path\n"
-                                    f"    {ngc}\n    {mpf}")
-                    continue
-                nc, rs = nc_lap, rs_lap
+                nc, rs = laps
             diff = compare_segments(nc, rs)
             if diff:
                 failures.append(f"{name} ({c.plane}, {'CCW' if c.ccw else 'CW'} contour): {diff}\n"
