@@ -251,9 +251,21 @@ void RadiusCompensation::motion(const MotionBlock& m) {
         }
         if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
           notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
-        emitPiece(last);
-        emitWaiting(last.compensated.p1);
-        retract.p0 = last.compensated.p1;
+        // G460: if the retraction line cuts the last equidistant before its end, that
+        // intersection replaces the normal point (details Q1).
+        Piece fin = last;
+        retract.p0 = fin.compensated.p1;
+        if (geom::length(retract.p1 - retract.p0) > kEps) {
+          double best = -1;
+          for (const auto& x : geom::intersect(fin.compensated, retract))
+            if (x.u1 > -kEps && x.u1 < 1 - 1e-9 && x.u2 > 1e-9 && x.u2 < 1 + kEps && x.u1 > best) {
+              best = x.u1;
+              fin.compensated.p1 = x.p;
+            }
+          retract.p0 = fin.compensated.p1;
+        }
+        emitPiece(fin);
+        emitWaiting(fin.compensated.p1);
         MotionBlock b = toBlock(m, retract);
         emit(b);
         pending_.reset();
@@ -276,14 +288,20 @@ void RadiusCompensation::motion(const MotionBlock& m) {
   }
 }
 
+void RadiusCompensation::joinAt(Piece& cur, Piece& next, Vec2 x) {
+  cur.compensated.p1 = x;
+  next.compensated.p0 = x;
+  emitPiece(cur);
+  emitWaiting(x);
+  pending_ = next;
+}
+
 void RadiusCompensation::corner(Piece& next) {
   Piece& cur = *pending_;
   const Vec2 a = cur.compensated.p1, b = next.compensated.p0;
   const Vec2 p = cur.programmed.p1;  // the corner point
   if (geom::length(a - b) < kEps) {  // tangent transition: nothing inserted
-    emitPiece(cur);
-    emitWaiting(a);
-    pending_ = next;
+    joinAt(cur, next, a);
     return;
   }
   const Vec2 t1 = cur.programmed.endTangent(), t2 = next.programmed.startTangent();
@@ -302,11 +320,7 @@ void RadiusCompensation::corner(Piece& next) {
     if (!best)
       notModelled("an inside corner whose equidistants do not meet within the two blocks (the "
                   "look-ahead over MD20240 blocks)");
-    cur.compensated.p1 = best->p;
-    next.compensated.p0 = best->p;
-    emitPiece(cur);
-    emitWaiting(best->p);
-    pending_ = next;
+    joinAt(cur, next, best->p);
     return;
   }
   // Outside corner (details Q3/Q4): G450 circle unless flatter than MD20230; G451 intersection
@@ -324,11 +338,7 @@ void RadiusCompensation::corner(Piece& next) {
           (!best || geom::length(x.p - p) < geom::length(best->p - p)))
         best = x;
     if (best) {
-      cur.compensated.p1 = best->p;
-      next.compensated.p0 = best->p;
-      emitPiece(cur);
-      emitWaiting(best->p);
-      pending_ = next;
+      joinAt(cur, next, best->p);
       return;
     }
   }
@@ -360,7 +370,9 @@ void RadiusCompensation::kontApproach(Piece& first) {
   const double r = std::fabs(settings_.radius), s = side();
   std::optional<Vec2> t = tangentPoint(p0, p1, r, s, true);
   if (!t)
-    raise(10755, "activation of tool radius compensation via KONT not possible in current start point");
+    throw AlarmError(10755,
+                     "activation of tool radius compensation via KONT not possible in current start point",
+                     selection_.line);  // the selection block is the one to change
   Element line;
   line.p0 = p0;
   line.p1 = *t;

@@ -59,6 +59,8 @@ class RadiusCompensation {
   // A new compensation value in a line spreads over that block (details Q8).
   Piece compensateWithChange(const place::MotionBlock& m);
   void corner(Piece& next);
+  // Ends `cur` and starts `next` at x, passes `cur` and the waiting blocks on; `next` waits.
+  void joinAt(Piece& cur, Piece& next, geom::Vec2 x);
   void kontApproach(Piece& first);
   void kontRetraction(const place::MotionBlock& m);
   void checkSameSettings(const place::MotionBlock& m) const;
