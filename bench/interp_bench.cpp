@@ -125,6 +125,33 @@ void BM_LoopArcsExpr(benchmark::State& state) {
 }
 
 // End to end: plain G1 blocks written as CSV (the CLI's writer) to /dev/null.
+// A radius-compensation program: laps of a 100 x 60 rectangle with rounded corners (lines and
+// G3 arcs alternating), G41 with a 4 mm tool, CDOF, G450; end to end to CSV.
+std::string trcProgram(long blocks) {
+  std::string t = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\nT1 D1\nG17 G90 G0 X-20 Y-20 Z0\n"
+                  "G41 G1 X10 Y0 F1000\n";
+  const char* lap[] = {"G1 X90 Y0\n", "G3 X100 Y10 CR=10\n", "G1 X100 Y50\n",
+                       "G3 X90 Y60 CR=10\n", "G1 X10 Y60\n", "G3 X0 Y50 CR=10\n",
+                       "G1 X0 Y10\n", "G3 X10 Y0 CR=10\n"};
+  for (long i = 0; i < blocks; ++i) t += lap[i % 8];
+  t += "G1 X10 Y0\nG40 X-20 Y-20\nM30\n";
+  return t;
+}
+
+void BM_TrcContourCsv(benchmark::State& state) {
+  const long blocks = state.range(0);
+  const std::string text = trcProgram(blocks);
+  std::FILE* devnull = std::fopen("/dev/null", "wb");
+  if (!devnull) throw std::runtime_error("cannot open /dev/null");
+  for (auto _ : state) {
+    ncoffset::Channel channel;
+    ncoffset::out::CsvWriter csv(devnull);
+    check(channel.runText("TRC.MPF", text, csv), state);
+  }
+  std::fclose(devnull);
+  state.SetItemsProcessed(state.iterations() * blocks);
+}
+
 void BM_PlainG1Csv(benchmark::State& state) {
   const long blocks = state.range(0);
   const std::string text = plainG1Program(blocks);
@@ -155,6 +182,8 @@ int main(int argc, char** argv) {
       ->Arg(blocks / 5)->Unit(benchmark::kMillisecond)->Iterations(3);
   benchmark::RegisterBenchmark("BM_PlainG1Csv", BM_PlainG1Csv)
       ->Arg(blocks)->Unit(benchmark::kMillisecond)->Iterations(5);
+  benchmark::RegisterBenchmark("BM_TrcContourCsv", BM_TrcContourCsv)
+      ->Arg(blocks)->Unit(benchmark::kMillisecond)->Iterations(3);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
