@@ -124,7 +124,6 @@ void BM_LoopArcsExpr(benchmark::State& state) {
   state.counters["segments"] = static_cast<double>(segments);
 }
 
-// End to end: plain G1 blocks written as CSV (the CLI's writer) to /dev/null.
 // A radius-compensation program: laps of a 100 x 60 rectangle with rounded corners (lines and
 // G3 arcs alternating), G41 with a 4 mm tool, CDOF, G450; end to end to CSV.
 std::string trcProgram(long blocks) {
@@ -138,23 +137,8 @@ std::string trcProgram(long blocks) {
   return t;
 }
 
-void BM_TrcContourCsv(benchmark::State& state) {
-  const long blocks = state.range(0);
-  const std::string text = trcProgram(blocks);
-  std::FILE* devnull = std::fopen("/dev/null", "wb");
-  if (!devnull) throw std::runtime_error("cannot open /dev/null");
-  for (auto _ : state) {
-    ncoffset::Channel channel;
-    ncoffset::out::CsvWriter csv(devnull);
-    check(channel.runText("TRC.MPF", text, csv), state);
-  }
-  std::fclose(devnull);
-  state.SetItemsProcessed(state.iterations() * blocks);
-}
-
-void BM_PlainG1Csv(benchmark::State& state) {
-  const long blocks = state.range(0);
-  const std::string text = plainG1Program(blocks);
+// Runs `text` end to end through the CLI's CSV writer into /dev/null.
+void runToCsv(benchmark::State& state, const std::string& text, long items) {
   std::FILE* devnull = std::fopen("/dev/null", "wb");
   if (!devnull) throw std::runtime_error("cannot open /dev/null");
   for (auto _ : state) {
@@ -163,7 +147,16 @@ void BM_PlainG1Csv(benchmark::State& state) {
     check(channel.runText("BENCH.MPF", text, csv), state);
   }
   std::fclose(devnull);
-  state.SetItemsProcessed(state.iterations() * (blocks + 1));
+  state.SetItemsProcessed(state.iterations() * items);
+}
+
+void BM_TrcContourCsv(benchmark::State& state) {
+  runToCsv(state, trcProgram(state.range(0)), state.range(0));
+}
+
+// End to end: plain G1 blocks written as CSV (the CLI's writer) to /dev/null.
+void BM_PlainG1Csv(benchmark::State& state) {
+  runToCsv(state, plainG1Program(state.range(0)), state.range(0) + 1);
 }
 
 }  // namespace

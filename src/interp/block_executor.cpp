@@ -81,7 +81,7 @@ void Interpreter::collectWord(const Stmt& st) {
         double g = value();
         if (g < 0 || g != std::floor(g) || g > 9999)
           raise(alarm_no::kUnknownGCode, fmt::format("G function G{} is unknown", g));
-        gCode(static_cast<int>(g), st);
+        gCode(static_cast<int>(g));
         return;
       }
       case 'F': {
@@ -173,8 +173,7 @@ void Interpreter::collectWord(const Stmt& st) {
   notModelled(fmt::format("address {}=", name), "this address changes the path and is not modelled");
 }
 
-void Interpreter::gCode(int g, const Stmt& st) {
-  (void)st;
+void Interpreter::gCode(int g) {
   switch (g) {
     case 0: modal_.motion = Motion::G0; words_.motion_word = true; return;
     case 1: modal_.motion = Motion::G1; words_.motion_word = true; return;

@@ -88,7 +88,7 @@ class Interpreter final : public lang::Environment {
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
   void namedWord(const lang::Stmt& st);
-  void gCode(int code, const lang::Stmt& st);
+  void gCode(int code);
   void finishBlock();
   void doMotion();
   void doFrameCommand();
@@ -113,7 +113,7 @@ class Interpreter final : public lang::Environment {
   void writeSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                    const lang::Value& v);
   Frame* frameByName(std::string_view name, std::span<const lang::Value> idx, bool indexed,
-                     bool for_write, bool& whole);
+                     bool& whole);
   void updateActiveFrame();
 
   RunOptions options_;

@@ -111,13 +111,7 @@ double MachineData::get(std::string_view name) const {
   return get(id);
 }
 
-void MachineData::set(int id, int axis, double value) {
-  set(id, value);  // range checks
-  axis_values_[static_cast<size_t>(id)][static_cast<size_t>(axis)] = values_[static_cast<size_t>(id)];
-  values_[static_cast<size_t>(id)] = spec(id).default_value;
-}
-
-void MachineData::set(int id, double value) {
+double MachineData::checked(int id, double value) const {
   const DataSpec& s = spec(id);
   if (!std::isfinite(value)) raise(alarm_no::kValueRange, fmt::format("value range exceeded for {}", s.name));
   if (s.integer) value = std::round(value);
@@ -131,7 +125,14 @@ void MachineData::set(int id, double value) {
                             s.cls == DataClass::ChannelSd || s.cls == DataClass::NckSd ? "SD" : "MD",
                             s.number, value, s.lo, s.hi));
   }
-  values_[static_cast<size_t>(id)] = value;
+  return value;
 }
+
+void MachineData::set(int id, double value) { values_[static_cast<size_t>(id)] = checked(id, value); }
+
+void MachineData::set(int id, int axis, double value) {
+  axis_values_[static_cast<size_t>(id)][static_cast<size_t>(axis)] = checked(id, value);
+}
+
 
 }  // namespace ncoffset::interp

@@ -42,6 +42,8 @@ class MachineData {
   static const std::vector<DataSpec>& table();
 
  private:
+  // The value as stored (rounded for integer data); throws 12160 / 99013 when not allowed.
+  double checked(int id, double value) const;
   std::vector<double> values_;
   std::vector<std::array<double, 3>> axis_values_;
 };

@@ -46,8 +46,7 @@ double& component(Frame& f, std::string_view comp, int axis) {
 }  // namespace
 
 Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> idx, bool indexed,
-                                bool for_write, bool& whole) {
-  (void)for_write;
+                                bool& whole) {
   whole = false;
   if (name == "$P_UIFR") {
     if (!indexed || (idx.size() != 1 && idx.size() != 3))
@@ -109,7 +108,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     return true;
   }
   bool whole;
-  Frame* f = frameByName(name, idx, indexed, false, whole);
+  Frame* f = frameByName(name, idx, indexed, whole);
   if (!f) return false;
   if (whole) {
     out = frameValue(*f);
@@ -143,7 +142,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
   if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
     raise(alarm_no::kNameNotDefined, fmt::format("{} can only be read", name));
   bool whole;
-  Frame* f = frameByName(name, idx, indexed, true, whole);
+  Frame* f = frameByName(name, idx, indexed, whole);
   if (!f) {
     if (!name.empty() && name[0] == '$')
       raise(alarm_no::kNameNotDefined,

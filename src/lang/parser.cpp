@@ -274,7 +274,7 @@ class Parser {
         n.number = name == "TRUE" ? 1 : 0;
         return addNode(n);
       }
-      if (name.size() >= 2 && name[0] == 'R' && isDigitsOnly(name.substr(1))) {
+      if (isRParamName(name)) {
         Node n;
         n.kind = NodeKind::RParam;
         n.number = parseDigits(name.substr(1));
@@ -301,6 +301,10 @@ class Parser {
     syntax("operand expected");
   }
 
+  // R1, R99: an R parameter written as a name.
+  static bool isRParamName(std::string_view v) {
+    return v.size() >= 2 && v[0] == 'R' && isDigitsOnly(v.substr(1));
+  }
   static bool isDigitsOnly(std::string_view v) {
     if (v.empty()) return false;
     for (char c : v)
@@ -654,16 +658,12 @@ class Parser {
     if (kw == "FOR") {
       skipSpaces();
       if (!isAlpha(peek())) syntax("loop variable expected after FOR");
-      int col2 = column();
-      (void)col2;
-      size_t save = i_;
       std::string_view var = ident();
       Node t;
-      if (var.size() >= 2 && var[0] == 'R' && isDigitsOnly(var.substr(1))) {
+      if (isRParamName(var)) {
         t.kind = NodeKind::RParam;
         t.number = parseDigits(var.substr(1));
       } else {
-        (void)save;
         t.kind = NodeKind::Name;
         t.text = var;
       }
@@ -691,7 +691,6 @@ class Parser {
     if (kw == "PROC") {
       skipSpaces();
       if (!isAlpha(peek())) syntax("program name expected after PROC");
-      st.target = -1;
       std::string_view name = ident();
       Node n;
       n.kind = NodeKind::Name;
