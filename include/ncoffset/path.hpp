@@ -32,6 +32,14 @@ class PathSink {
   virtual void segment(const Segment& s) = 0;
   // A message from MSG("...").
   virtual void message(const SourceLoc&, const std::string&) {}
+  // A warning that does not stop the run (e.g. 10763: a block omitted by bottleneck detection).
+  virtual void warning(const SourceLoc&, int /*number*/, const std::string& /*text*/) {}
+  // The programmed (uncompensated) tool path of a motion, in the same coordinates as the
+  // segments: what the tool centre would follow without radius compensation. For drawings;
+  // emitted before the compensated segments of the same block where compensation is active.
+  virtual void programmed(const Segment&) {}
+  // Whether programmed() is wanted at all (asked once per run; computing it costs time).
+  virtual bool wantsProgrammed() const { return false; }
   // The run ended: normally (alarm == nullptr) or by an alarm.
   virtual void finish(const Alarm* alarm) = 0;
 };

@@ -14,6 +14,9 @@ class SwitchSink final : public PathSink {
   PathSink* target = nullptr;
   void segment(const Segment& s) override { target->segment(s); }
   void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
+  void warning(const SourceLoc& l, int n, const std::string& t) override { target->warning(l, n, t); }
+  void programmed(const Segment& s) override { target->programmed(s); }
+  bool wantsProgrammed() const override { return target && target->wantsProgrammed(); }
   void finish(const Alarm* a) override { target->finish(a); }
 };
 }  // namespace

@@ -70,6 +70,7 @@ SourceLoc Interpreter::alarmLoc(const AlarmError& e) const {
 void Interpreter::run(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
   ended_ = false;
+  placement_.beginRun([this](int id) -> const std::string& { return fileName(id); });
   levels_.clear();
   ProgramLevel main;
   main.program = &program;

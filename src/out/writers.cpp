@@ -69,6 +69,16 @@ void JsonLinesWriter::message(const SourceLoc& where, const std::string& text) {
   w_.lineDone();
 }
 
+void JsonLinesWriter::warning(const SourceLoc& where, int number, const std::string& text) {
+  auto& b = w_.buf();
+  fmt::format_to(fmt::appender(b), "{{\"warning\":{},\"file\":", number);
+  appendJsonString(b, where.file);
+  fmt::format_to(fmt::appender(b), ",\"line\":{},\"text\":", where.line);
+  appendJsonString(b, text);
+  fmt::format_to(fmt::appender(b), "}}\n");
+  w_.lineDone();
+}
+
 void JsonLinesWriter::finish(const Alarm* alarm) {
   if (alarm) {
     auto& b = w_.buf();

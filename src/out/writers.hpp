@@ -54,6 +54,7 @@ class JsonLinesWriter final : public PathSink {
   JsonLinesWriter(std::FILE* f, FileNames names) : w_(f), names_(std::move(names)) {}
   void segment(const Segment& s) override;
   void message(const SourceLoc& where, const std::string& text) override;
+  void warning(const SourceLoc& where, int number, const std::string& text) override;
   void finish(const Alarm* alarm) override;
 
  private:

@@ -4,7 +4,7 @@
 
 namespace ncoffset::place {
 
-void Placement::motion(const MotionBlock& m) {
+Segment Placement::toSegment(const MotionBlock& m) const {
   Segment s;
   s.line = m.line;
   s.file = m.file;
@@ -40,7 +40,18 @@ void Placement::motion(const MotionBlock& m) {
       if (flip) s.motion = m.motion == Motion::G2 ? Motion::G3 : Motion::G2;
     }
   }
-  sink_.segment(s);
+  return s;
+}
+
+void Placement::motion(const MotionBlock& m) { sink_.segment(toSegment(m)); }
+
+void Placement::warning(const MotionBlock& m, int number, const std::string& text) {
+  static const std::string kUnknown = "?";
+  sink_.warning({file_name_ ? file_name_(m.file) : kUnknown, m.line}, number, text);
+}
+
+void Placement::programmed(const MotionBlock& m) {
+  if (wants_programmed_) sink_.programmed(toSegment(m));
 }
 
 }  // namespace ncoffset::place

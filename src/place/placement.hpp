@@ -3,6 +3,9 @@
 // transformation) or stays in WCS (`--coords wcs`).
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include "ncoffset/channel.hpp"
 #include "ncoffset/frame.hpp"
 #include "ncoffset/path.hpp"
@@ -31,11 +34,26 @@ struct MotionBlock {
 class Placement {
  public:
   Placement(PathSink& sink, CoordSystem coords) : sink_(sink), coords_(coords) {}
+  // At the start of each run (the sink behind a run may change): how to name files in
+  // warnings, and whether the sink draws the programmed path.
+  void beginRun(std::function<const std::string&(int)> file_name) {
+    file_name_ = std::move(file_name);
+    wants_programmed_ = sink_.wantsProgrammed();
+  }
+  // A motion of the (compensated) path.
   void motion(const MotionBlock& m);
+  // The programmed motion of a block, for sinks that draw the contour (PathSink::programmed).
+  void programmed(const MotionBlock& m);
+  // A warning of the compensation stage (not interrupting).
+  void warning(const MotionBlock& m, int number, const std::string& text);
 
  private:
+  Segment toSegment(const MotionBlock& m) const;
+
   PathSink& sink_;
   CoordSystem coords_;
+  bool wants_programmed_ = false;
+  std::function<const std::string&(int)> file_name_;
 };
 
 }  // namespace ncoffset::place

@@ -171,6 +171,7 @@ void RadiusCompensation::blockWithoutMotion() {
 }
 
 void RadiusCompensation::motion(const MotionBlock& m) {
+  out_.programmed(m);
   switch (state_) {
     case State::Off: {
       const bool wants = m.trc.mode != 40 && std::fabs(m.trc.radius) > 1e-12;

@@ -20,6 +20,13 @@ class MessagePrinter final : public ncoffset::PathSink {
     std::fprintf(stderr, "%s:%d: message: %s\n", where.file.c_str(), where.line, text.c_str());
     next_.message(where, text);
   }
+  void warning(const ncoffset::SourceLoc& where, int number, const std::string& text) override {
+    std::fprintf(stderr, "%s:%d: warning %d: %s\n", where.file.c_str(), where.line, number,
+                 text.c_str());
+    next_.warning(where, number, text);
+  }
+  void programmed(const ncoffset::Segment& s) override { next_.programmed(s); }
+  bool wantsProgrammed() const override { return next_.wantsProgrammed(); }
   void finish(const ncoffset::Alarm* alarm) override { next_.finish(alarm); }
 
  private:
