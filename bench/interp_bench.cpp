@@ -125,10 +125,11 @@ void BM_LoopArcsExpr(benchmark::State& state) {
 }
 
 // A radius-compensation program: laps of a 100 x 60 rectangle with rounded corners (lines and
-// G3 arcs alternating), G41 with a 4 mm tool, CDOF, G450; end to end to CSV.
+// G3 arcs alternating), G41 with a 4 mm tool, CDON (bottleneck detection over MD20240 = 3 blocks), G450; end to end
+// to CSV.
 std::string trcProgram(long blocks) {
   std::string t = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\nT1 D1\nG17 G90 G0 X-20 Y-20 Z0\n"
-                  "G41 G1 X10 Y0 F1000\n";
+                  "G41 CDON G1 X10 Y0 F1000\n";
   const char* lap[] = {"G1 X90 Y0\n", "G3 X100 Y10 CR=10\n", "G1 X100 Y50\n",
                        "G3 X90 Y60 CR=10\n", "G1 X10 Y60\n", "G3 X0 Y50 CR=10\n",
                        "G1 X0 Y10\n", "G3 X10 Y0 CR=10\n"};

@@ -22,6 +22,7 @@ struct TrcSettings {
   double corner_limit = 100;       // MD20210 CUTCOM_CORNER_LIMIT (degrees)
   double curve_insert_limit = 10;  // MD20230 CUTCOM_CURVE_INSERT_LIMIT (degrees)
   int max_dummy_blocks = 1;        // MD20250 CUTCOM_MAXNUM_DUMMY_BLOCKS
+  int check_blocks = 3;            // MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS (look-ahead)
 };
 
 }  // namespace ncoffset

@@ -79,6 +79,12 @@ Vec2 pointAt(const Element& e, double u) {
   return {e.c.a + r * std::cos(a), e.c.o + r * std::sin(a)};
 }
 
+Vec2 tangentAt(const Element& e, Vec2 p) {
+  if (!e.arc) return unit(e.p1 - e.p0);
+  Vec2 r = unit(p - e.c);
+  return e.ccw ? leftNormal(r) : -1.0 * leftNormal(r);
+}
+
 std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
   std::vector<Crossing> out;
   auto lineParam = [](const Element& l, Vec2 p) {

@@ -16,7 +16,8 @@ inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.a - b.a, a.o - b.o}; }
 inline Vec2 operator*(double s, Vec2 v) { return {s * v.a, s * v.o}; }
 inline double dot(Vec2 a, Vec2 b) { return a.a * b.a + a.o * b.o; }
 inline double cross(Vec2 a, Vec2 b) { return a.a * b.o - a.o * b.a; }
-inline double length(Vec2 v) { return std::hypot(v.a, v.o); }
+// Coordinates are limited to 1e9 mm (block_executor), so no overflow guard (hypot) is needed.
+inline double length(Vec2 v) { return std::sqrt(v.a * v.a + v.o * v.o); }
 inline Vec2 leftNormal(Vec2 t) { return {-t.o, t.a}; }
 
 // A line (arc == false) or a circular arc from p0 to p1 about c, turning ccw (G3) or cw (G2).
@@ -49,5 +50,8 @@ std::vector<Crossing> intersect(const Element& e1, const Element& e2);
 
 // The point at fraction u of an element (same parametrisation as Crossing).
 Vec2 pointAt(const Element& e, double u);
+
+// The unit tangent in the direction of travel at point p of the element (p on its line/circle).
+Vec2 tangentAt(const Element& e, Vec2 p);
 
 }  // namespace ncoffset::geom

@@ -424,6 +424,7 @@ void Interpreter::doMotion() {
   m.trc.corner_limit = data_.get(md_corner_limit_);
   m.trc.curve_insert_limit = data_.get(md_insert_limit_);
   m.trc.max_dummy_blocks = static_cast<int>(data_.get(md_dummy_blocks_));
+  m.trc.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
   // Computed geometry must stay finite and within the machine's number range: a frame with a
   // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
   Vec3 checks[] = {frame.apply(m.end) + applied_offset_, frame.apply(m.centre)};

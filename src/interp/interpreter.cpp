@@ -32,6 +32,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
   md_corner_limit_ = data_.find("$MC_CUTCOM_CORNER_LIMIT");
   md_insert_limit_ = data_.find("$MC_CUTCOM_CURVE_INSERT_LIMIT");
   md_dummy_blocks_ = data_.find("$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS");
+  md_check_blocks_ = data_.find("$MC_CUTCOM_MAXNUM_CHECK_BLOCKS");
   md_change_mode_ = data_.find("$MC_TOOL_CHANGE_MODE");
   md_change_m_ = data_.find("$MC_TOOL_CHANGE_M_CODE");
   md_default_edge_ = data_.find("$MC_CUTTING_EDGE_DEFAULT");

@@ -158,7 +158,7 @@ class Interpreter final : public lang::Environment {
   Affine act_inverse_;
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
-  int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0;
+  int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0, md_check_blocks_ = 0;
   bool block_moved_ = false;  // the executing block handed a motion on
 
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection

@@ -48,13 +48,57 @@ std::optional<Vec2> tangentPoint(Vec2 p, Vec2 c, double r, double s, bool approa
   return std::nullopt;
 }
 
+Vec2 unit(Vec2 v) {
+  double l = geom::length(v);
+  return l > 0 ? (1.0 / l) * v : Vec2{1, 0};
+}
+
+// A full circle about c (radius r) as an element: every point of it has a parameter in [0, 1].
+Element fullCircle(Vec2 c, double r) {
+  Element e;
+  e.arc = true;
+  e.c = c;
+  e.p0 = e.p1 = {c.a + r, c.o};
+  e.ccw = true;
+  return e;
+}
+
+// Bounding boxes of two elements overlap (arcs: their whole circle), a cheap test before
+// intersecting them.
+bool overlap(const Element& a, const Element& b) {
+  auto box = [](const Element& e, double lo[2], double hi[2]) {
+    if (e.arc) {
+      const double r = geom::length(e.p0 - e.c);
+      lo[0] = e.c.a - r, hi[0] = e.c.a + r, lo[1] = e.c.o - r, hi[1] = e.c.o + r;
+    } else {
+      lo[0] = std::fmin(e.p0.a, e.p1.a), hi[0] = std::fmax(e.p0.a, e.p1.a);
+      lo[1] = std::fmin(e.p0.o, e.p1.o), hi[1] = std::fmax(e.p0.o, e.p1.o);
+    }
+  };
+  double la[2], ha[2], lb[2], hb[2];
+  box(a, la, ha);
+  box(b, lb, hb);
+  constexpr double kSlack = 1e-6;
+  return la[0] <= hb[0] + kSlack && lb[0] <= ha[0] + kSlack && la[1] <= hb[1] + kSlack &&
+         lb[1] <= ha[1] + kSlack;
+}
+
+[[noreturn]] void collision(int line, int check_blocks) {
+  throw AlarmError(10751,
+                   fmt::format("danger of collision due to tool radius compensation: no point of "
+                               "intersection found within the reviewed {} traversing blocks "
+                               "(MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS)",
+                               check_blocks),
+                   line);
+}
+
 }  // namespace
 
-double RadiusCompensation::side() const {
+double RadiusCompensation::sideOf(const TrcSettings& t) const {
   // G41: left of the direction of travel; a negative compensation value changes the side
   // (PM-NC p256).
-  double s = settings_.mode == 41 ? 1.0 : -1.0;
-  return settings_.radius < 0 ? -s : s;
+  double s = t.mode == 41 ? 1.0 : -1.0;
+  return t.radius < 0 ? -s : s;
 }
 
 Element RadiusCompensation::toElement(const MotionBlock& m) const {
@@ -91,6 +135,12 @@ MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& 
   return b;
 }
 
+MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const {
+  Element e;
+  e.p0 = e.p1 = at;
+  return toBlock(like, e);
+}
+
 bool RadiusCompensation::planeMotion(const MotionBlock& m) const {
   if (m.motion == Motion::G2 || m.motion == Motion::G3) return true;
   Element e = toElement(m);
@@ -104,58 +154,63 @@ RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, d
   p.programmed = toElement(m);
   p.r0 = r0;
   p.r1 = r1;
-  double r = std::fmax(r0, r1);
-  auto eq = geom::equidistant(p.programmed, side() * r);
-  if (!eq)
-    raise(10751, fmt::format("danger of collision due to tool radius compensation: the arc radius "
-                             "{} is not larger than the compensation value {} on its inside",
-                             p.programmed.radius(), r));
-  p.compensated = *eq;
-  if (r0 != r1) {
-    // Only lines get here: from start + R_old n to end + R_new n.
-    Vec2 n = side() * geom::leftNormal(p.programmed.startTangent());
+  p.side = side();
+  const double s = p.side;
+  if (r0 == r1) {
+    auto eq = geom::equidistant(p.programmed, s * r0);
+    if (eq) p.compensated = *eq;
+    p.valid = eq.has_value();
+  } else if (!p.programmed.arc) {
+    // A new value in a line: from start + R_old n to end + R_new n (details Q8).
+    Vec2 n = s * geom::leftNormal(p.programmed.startTangent());
+    p.compensated = p.programmed;
     p.compensated.p0 = p.programmed.p0 + r0 * n;
     p.compensated.p1 = p.programmed.p1 + r1 * n;
+  } else {
+    // A new value in a circle: a spiral from radius r -+ R_old to r -+ R_new (details Q8).
+    const Element& e = p.programmed;
+    const double r = e.radius();
+    const double k = e.ccw ? -s : s;  // the left side of a ccw arc is its inside
+    const double ra = r + k * r0, rb = geom::length(e.p1 - e.c) + k * r1;
+    if (ra <= kEps || rb <= kEps)
+      raise(10758, "curvature radius with variable compensation value too small");
+    p.compensated = e;
+    p.compensated.p0 = e.c + (ra / r) * (e.p0 - e.c);
+    p.compensated.p1 = e.c + (rb / geom::length(e.p1 - e.c)) * (e.p1 - e.c);
   }
+  p.raw = p.compensated;
   return p;
 }
 
 Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const {
-  double r = at_end ? p.r1 : p.r0;
   if (p.r0 == p.r1) return p.compensated;
-  Element e = *geom::equidistant(p.programmed, side() * r);  // a line: always exists
-  return e;
+  double r = at_end ? p.r1 : p.r0;
+  auto e = geom::equidistant(p.programmed, p.side * r);
+  return e ? *e : p.compensated;
 }
 
-RadiusCompensation::Piece RadiusCompensation::compensateWithChange(const MotionBlock& m) {
-  const double old_r = std::fabs(settings_.radius), new_r = std::fabs(m.trc.radius);
-  if (std::fabs(old_r - new_r) < 1e-12) return compensate(m);
-  if ((m.trc.radius < 0) != (settings_.radius < 0))
-    notModelled("a change of the compensation value that changes its sign (side) while active");
-  if (m.motion == Motion::G2 || m.motion == Motion::G3)
-    notModelled("a change of the compensation value in a circle block (a spiral, details Q8)");
-  settings_.radius = m.trc.radius;
-  return compensate(m, old_r, new_r);
-}
-
-void RadiusCompensation::emitPiece(const Piece& p) { emit(toBlock(p.block, p.compensated)); }
-
-void RadiusCompensation::emitWaiting(Vec2 at) {
-  // Blocks without plane motion (infeed, other axes) run at the intermediate point (PM-F 8-40).
-  for (MotionBlock w : waiting_) {
-    PlaneAxes pa = planeAxes(w.plane);
-    w.start[pa.abscissa] = w.end[pa.abscissa] = at.a;
-    w.start[pa.ordinate] = w.end[pa.ordinate] = at.o;
-    emit(w);
+RadiusCompensation::Piece RadiusCompensation::compensateNext(const MotionBlock& m) {
+  const double old_side = side(), old_r = std::fabs(settings_.radius);
+  const double new_r = std::fabs(m.trc.radius);
+  settings_ = m.trc;
+  if (sideOf(m.trc) != old_side) {
+    // G41 <-> G42 (or the sign of the value) while active: the last element ends on its normal,
+    // the new side starts on the normal at this block's start (PM-NC "change of compensation
+    // direction"; details Q8 for the sign).
+    Piece p = compensate(m, new_r, new_r);
+    p.restart = true;
+    return p;
   }
-  waiting_.clear();
+  return compensate(m, old_r, std::fabs(old_r - new_r) < 1e-12 ? old_r : new_r);
+}
+
+void RadiusCompensation::emitPiece(const Piece& p) {
+  if (p.transition) emit(*p.transition);
+  emit(toBlock(p.block, p.compensated));
+  for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
 }
 
 void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
-  if (m.trc.mode != settings_.mode)
-    notModelled(fmt::format("changing from G{} to G{} while compensation is active", settings_.mode,
-                            m.trc.mode));
-  if (m.trc.collision == CollisionCheck::Cdon) notModelled("CDON bottleneck detection");
   if (m.plane != selection_.plane)
     raise(10757, "change of compensation plane not possible while tool radius compensation is active");
   if (!sameAffine(m.frame, selection_.frame))
@@ -183,8 +238,6 @@ void RadiusCompensation::motion(const MotionBlock& m) {
         raise(10753, "activation of tool radius compensation only possible in linear block");
       if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
         notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
-      if (m.trc.collision == CollisionCheck::Cdon) notModelled("CDON bottleneck detection");
-      if (m.trc.strategy != 460) notModelled(fmt::format("G{}", m.trc.strategy));
       settings_ = m.trc;
       selection_ = m;
       state_ = State::Selecting;
@@ -207,145 +260,139 @@ void RadiusCompensation::motion(const MotionBlock& m) {
         blockWithoutMotion();
         return;
       }
-      Piece first = compensate(m);
-      Element approach;
-      approach.p0 = toElement(selection_).p0;
-      approach.p1 = first.compensated.p0;
+      if (sideOf(m.trc) != side()) settings_ = m.trc;  // the side of the first element counts
+      const double r = std::fabs(settings_.radius);
+      Piece first = compensate(m, r, r);
+      if (!first.valid)
+        collision(m.line, settings_.check_blocks);  // no element to approach
+      Piece approach;
+      approach.block = selection_;
+      approach.approach = true;
+      approach.strategy = selection_.trc.strategy;
+      approach.side = first.side;
+      approach.programmed = toElement(selection_);
+      approach.compensated.p0 = approach.programmed.p0;
+      approach.compensated.p1 = first.compensated.p0;
       const Vec2 p1 = first.programmed.p0;
-      const Vec2 n1 = side() * geom::leftNormal(first.programmed.startTangent());
-      if (settings_.approach == Approach::Kont && geom::dot(approach.p0 - p1, n1) < -kEps) {
-        kontApproach(first);
-        return;
-      }
-      // NORM: one straight line to the normal point of the first element (details Q1); if it
-      // cuts the first equidistant earlier, the intersection replaces that point (G460).
-      if (geom::length(approach.p1 - approach.p0) > kEps) {
+      const Vec2 n1 = first.side * geom::leftNormal(first.programmed.startTangent());
+      if (selection_.trc.approach == Approach::Kont &&
+          geom::dot(approach.programmed.p0 - p1, n1) < -kEps) {
+        approach.strategy = 460;  // the point behind the contour: G461/G462 have no effect (Q7)
+        kontApproach(approach, first);
+      } else if (geom::length(approach.compensated.p1 - approach.compensated.p0) > kEps) {
+        // NORM: one straight line to the normal point of the first element (details Q1); if it
+        // cuts the first equidistant earlier, the intersection replaces that point (G460).
         double best = 2;
-        for (const auto& x : geom::intersect(approach, first.compensated))
+        for (const auto& x : geom::intersect(approach.compensated, first.compensated))
           if (x.u1 > kEps && x.u1 < 1 - 1e-9 && x.u2 > -kEps && x.u2 < 1 + kEps && x.u1 < best) {
             best = x.u1;
-            approach.p1 = x.p;
+            approach.compensated.p1 = x.p;
           }
-        if (best < 2) first.compensated.p0 = approach.p1;
+        if (best < 2) first.compensated.p0 = approach.compensated.p1;
       }
-      emit(toBlock(selection_, approach));
-      emitWaiting(approach.p1);
-      pending_ = first;
+      approach.raw = approach.compensated;
+      approach.waiting = std::move(waiting_);
+      waiting_.clear();
+      window_.clear();
+      count_ = 1;
+      first.index = 1;
+      window_.pushBack() = std::move(approach);
+      window_.pushBack() = std::move(first);
       dummy_blocks_ = 0;
       state_ = State::On;
       return;
     }
     case State::On: {
       if (m.trc.mode == 40) {
-        // Deselection with G40 (NORM): the last element ends on its normal at its end point,
-        // then a straight line to the programmed end point (details Q1).
-        if (m.motion != Motion::G0 && m.motion != Motion::G1)
-          raise(10754, "deactivation of tool radius compensation only possible in linear block");
-        if (m.trc.strategy != 460) notModelled(fmt::format("G{}", m.trc.strategy));
-        const Piece& last = *pending_;
-        const Vec2 pe = last.programmed.p1;
-        const Vec2 ne = side() * geom::leftNormal(last.programmed.endTangent());
-        Element retract = toElement(m);
-        if (m.trc.approach == Approach::Kont && geom::dot(retract.p1 - pe, ne) < -kEps) {
-          kontRetraction(m);
-          return;
-        }
-        if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
-          notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
-        // G460: if the retraction line cuts the last equidistant before its end, that
-        // intersection replaces the normal point (details Q1).
-        Piece fin = last;
-        retract.p0 = fin.compensated.p1;
-        if (geom::length(retract.p1 - retract.p0) > kEps) {
-          double best = -1;
-          for (const auto& x : geom::intersect(fin.compensated, retract))
-            if (x.u1 > -kEps && x.u1 < 1 - 1e-9 && x.u2 > 1e-9 && x.u2 < 1 + kEps && x.u1 > best) {
-              best = x.u1;
-              fin.compensated.p1 = x.p;
-            }
-          retract.p0 = fin.compensated.p1;
-        }
-        emitPiece(fin);
-        emitWaiting(fin.compensated.p1);
-        MotionBlock b = toBlock(m, retract);
-        emit(b);
-        pending_.reset();
-        state_ = State::Off;
+        retract(m);
         return;
       }
       checkSameSettings(m);
-      settings_.corner = m.trc.corner;
-      settings_.disc = m.trc.disc;
       if (!planeMotion(m)) {
-        waiting_.push_back(m);
+        window_.back().waiting.push_back(m);
+        settings_.max_dummy_blocks = m.trc.max_dummy_blocks;
         blockWithoutMotion();
         return;
       }
-      Piece next = compensateWithChange(m);
-      corner(next);
+      Piece& next = window_.pushBack();
+      next = compensateNext(m);
+      next.index = ++count_;
+      connect(window_[window_.size() - 2], next);
+      bridge(next);
+      checkOpen(count_ + 1);
+      release();
       dummy_blocks_ = 0;
       return;
     }
   }
 }
 
-void RadiusCompensation::joinAt(Piece& cur, Piece& next, Vec2 x) {
-  cur.compensated.p1 = x;
-  next.compensated.p0 = x;
-  emitPiece(cur);
-  emitWaiting(x);
-  pending_ = next;
-}
-
-void RadiusCompensation::corner(Piece& next) {
-  Piece& cur = *pending_;
+void RadiusCompensation::connect(Piece& cur, Piece& next) {
+  if (!cur.valid || !next.valid) {
+    next.open_before = true;
+    return;
+  }
   const Vec2 a = cur.compensated.p1, b = next.compensated.p0;
+  if (next.restart) {
+    // A new side: no corner; a straight line from the old normal point to the new one, part
+    // of the new block.
+    if (geom::length(a - b) > kEps) {
+      Element line;
+      line.p0 = a;
+      line.p1 = b;
+      MotionBlock lb = toBlock(next.block, line);
+      PlaneAxes pa = planeAxes(lb.plane);
+      lb.end[pa.applicate] = lb.start[pa.applicate];
+      next.transition = lb;
+    }
+    return;
+  }
   const Vec2 p = cur.programmed.p1;  // the corner point
   if (geom::length(a - b) < kEps) {  // tangent transition: nothing inserted
-    joinAt(cur, next, a);
+    next.compensated.p0 = a;
     return;
   }
   const Vec2 t1 = cur.programmed.endTangent(), t2 = next.programmed.startTangent();
   const double c = geom::cross(t1, t2), d = geom::dot(t1, t2);
-  const double s = side();
+  const double s = next.side;
   const bool reversal = std::fabs(c) < 1e-12 && d < 0;
   const bool inside = !reversal && s * c > 0;
+  const Element e1 = cornerEquidistant(cur, true), e2 = cornerEquidistant(next, false);
   if (inside) {
     // Inside corner: both elements end at the intersection of their equidistants; of several,
-    // the one nearest the start of the next block (W1 2.4.3).
+    // the one nearest the start of the next block (W1 2.4.3). None: the look-ahead decides.
     std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(cornerEquidistant(cur, true), cornerEquidistant(next, false)))
+    for (const auto& x : geom::intersect(e1, e2))
       if (x.u1 > -kEps && x.u1 < 1 + kEps && x.u2 > -kEps && x.u2 < 1 + kEps &&
           (!best || x.u2 < best->u2))
         best = x;
-    if (!best)
-      notModelled("an inside corner whose equidistants do not meet within the two blocks (the "
-                  "look-ahead over MD20240 blocks)");
-    joinAt(cur, next, best->p);
+    if (!best) {
+      next.open_before = true;
+      return;
+    }
+    cur.compensated.p1 = next.compensated.p0 = best->p;
     return;
   }
   // Outside corner (details Q3/Q4): G450 circle unless flatter than MD20230; G451 intersection
   // unless the contour angle reaches MD20210.
   const double angle = reversal ? 180.0 : std::acos(std::fmax(-1.0, std::fmin(1.0, d))) * kDeg;
-  bool circle = settings_.corner == CornerMode::TransitionCircle
-                    ? !(angle < settings_.curve_insert_limit)
-                    : angle >= settings_.corner_limit;
-  if (circle && settings_.corner == CornerMode::TransitionCircle && settings_.disc > 0)
-    notModelled(fmt::format("DISC={} (transition curve other than a circle)", settings_.disc));
+  const TrcSettings& t = next.block.trc;
+  bool circle = t.corner == CornerMode::TransitionCircle ? !(angle < t.curve_insert_limit)
+                                                         : angle >= t.corner_limit;
+  if (circle && t.corner == CornerMode::TransitionCircle && t.disc > 0)
+    notModelled(fmt::format("DISC={} (transition curve other than a circle)", t.disc));
   if (!circle) {
     std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(cornerEquidistant(cur, true), cornerEquidistant(next, false)))
+    for (const auto& x : geom::intersect(e1, e2))
       if (x.u1 > 1 - kEps && x.u2 < kEps &&
           (!best || geom::length(x.p - p) < geom::length(best->p - p)))
         best = x;
     if (best) {
-      joinAt(cur, next, best->p);
+      cur.compensated.p1 = next.compensated.p0 = best->p;
       return;
     }
   }
   // Transition circle of the tool radius about the corner point; it belongs to the next block.
-  emitPiece(cur);
-  emitWaiting(a);
   Element arc;
   arc.arc = true;
   arc.p0 = a;
@@ -357,18 +404,185 @@ void RadiusCompensation::corner(Piece& next) {
   tb.start[pa.applicate] = tb.end[pa.applicate] = next.block.start[pa.applicate];
   tb.centre[pa.applicate] = tb.start[pa.applicate];
   tb.turns = 0;
-  emit(tb);
-  pending_ = next;
+  next.transition = tb;
+}
+
+void RadiusCompensation::bridge(Piece& next) {
+  // `next` is the window's last element.
+  bool needed = false;
+  for (size_t i = 0; i < window_.size(); ++i)
+    needed = needed || window_[i].open_before || !window_[i].valid;
+  if (!next.valid || window_.size() < 3 || (!needed && settings_.collision != CollisionCheck::Cdon))
+    return;
+  // Search back from the element before the last one (the last one was tried as the corner);
+  // CDOF stops at the first intersection found, CDON keeps searching and takes the last found
+  // (W1 2.4.8, details Q5).
+  const long oldest = next.index - settings_.check_blocks;
+  const Element later = cornerEquidistant(next, false);
+  std::optional<std::pair<size_t, Vec2>> found;
+  for (size_t j = window_.size() - 2; j-- > 0;) {
+    const Piece& c = window_[j];
+    if (c.index < oldest) break;
+    if (!c.valid || (c.approach && !needed)) continue;
+    // The element itself, then for an approach line with G461 a circle of the tool radius about
+    // the end point of the uncompensated approach block, with G462 the line's extension; both
+    // only to find an intersection (W1 2.4.10, details Q7).
+    Element targets[2] = {c.compensated, {}};
+    int n_targets = 1;
+    if (c.approach && c.strategy == 461) {
+      targets[n_targets++] = fullCircle(c.programmed.p1, std::fabs(next.r0));
+    } else if (c.approach && c.strategy == 462) {
+      targets[1].p0 = c.compensated.p1;
+      targets[1].p1 = c.compensated.p1 + unit(c.compensated.p1 - c.compensated.p0);
+      ++n_targets;
+    }
+    std::optional<geom::Crossing> best;
+    for (int k = 0; k < n_targets; ++k) {
+      const Element& target = targets[k];
+      const bool extension = k > 0;
+      if (!extension && !overlap(target, later)) continue;
+      for (const auto& x : geom::intersect(target, later)) {
+        const bool on_target = extension ? (!target.arc ? x.u1 > -kEps : true)
+                                         : x.u1 > kEps && x.u1 < 1 - 1e-9;
+        if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) continue;
+        // Like an inside corner: the later element turns towards the compensation side.
+        const Vec2 t1 = target.arc && !extension ? geom::tangentAt(target, x.p)
+                        : extension && target.arc ? unit(x.p - c.compensated.p0)
+                                                  : unit(target.p1 - target.p0);
+        if (next.side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9) continue;
+        if (!best || x.u2 < best->u2) best = x;
+      }
+      if (best) break;
+    }
+    if (!best) continue;
+    found = {j, best->p};
+    if (settings_.collision != CollisionCheck::Cdon) break;
+  }
+  if (!found) return;
+  auto [j, at] = *found;
+  window_[j].compensated.p1 = at;
+  next.compensated.p0 = at;
+  next.transition.reset();
+  next.open_before = false;
+  omitAfter(j, at, true);
+}
+
+void RadiusCompensation::omitAfter(size_t keep, Vec2 at, bool keep_last) {
+  PlaneAxes pa = planeAxes(selection_.plane);
+  const size_t end = keep_last ? window_.size() - 1 : window_.size();
+  for (size_t i = keep + 1; i < end; ++i) {
+    Piece& p = window_[i];
+    out_.warning(p.block, 10763,
+                 "path component of the block in the compensation plane becomes zero: block "
+                 "omitted by bottleneck detection of tool radius compensation");
+    // Everything but the plane motion runs at the intersection, in program order (Q5).
+    if (std::fabs(p.block.end[pa.applicate] - p.block.start[pa.applicate]) > 1e-12)
+      window_[keep].waiting.push_back(atPoint(p.block, at));
+    for (auto& w : p.waiting) window_[keep].waiting.push_back(std::move(w));
+  }
+  if (keep_last && end > keep + 1) window_[keep + 1] = std::move(window_.back());
+  window_.truncate(keep_last ? keep + 2 : keep + 1);
+}
+
+void RadiusCompensation::checkOpen(long next_index) const {
+  for (size_t i = 1; i < window_.size(); ++i) {
+    const Piece& p = window_[i];
+    if (!p.open_before && p.valid) continue;
+    const Piece& pred = window_[i - 1];
+    if (pred.index < next_index - settings_.check_blocks)
+      collision(p.valid ? pred.block.line : p.block.line, settings_.check_blocks);
+  }
+}
+
+void RadiusCompensation::release() {
+  const long reach = count_ + 1 - settings_.check_blocks;
+  while (window_.size() > 1 && window_.front().index < reach) {
+    emitPiece(window_.front());
+    window_.popFront();
+  }
+}
+
+void RadiusCompensation::flushAll() {
+  for (size_t i = 1; i < window_.size(); ++i) {
+    const Piece& p = window_[i];
+    if (!p.open_before && p.valid) continue;
+    collision(p.valid ? window_[i - 1].block.line : p.block.line, settings_.check_blocks);
+  }
+  for (size_t i = 0; i < window_.size(); ++i) emitPiece(window_[i]);
+  window_.clear();
+}
+
+void RadiusCompensation::retract(const MotionBlock& m) {
+  // Deselection with G40 (NORM): the last element ends on its normal at its end point, then a
+  // straight line to the programmed end point (details Q1).
+  if (m.motion != Motion::G0 && m.motion != Motion::G1)
+    raise(10754, "deactivation of tool radius compensation only possible in linear block");
+  if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
+    notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
+  Piece& last = window_.back();
+  if (!last.valid) collision(last.block.line, settings_.check_blocks);
+  const Vec2 pe = last.programmed.p1;
+  const Vec2 ne = last.side * geom::leftNormal(last.programmed.endTangent());
+  Element retract = toElement(m);
+  if (m.trc.approach == Approach::Kont && geom::dot(retract.p1 - pe, ne) < -kEps &&
+      kontRetraction(m))
+    return;
+  if (last.open_before && (m.trc.strategy == 461 || m.trc.strategy == 462)) {
+    // G461/G462: the last element, which meets no earlier one, is extended by a circle about
+    // its programmed end point (radius R) or along its end tangent; the intersection with an
+    // earlier element ends that element and starts the retraction (W1 2.4.10, details Q7).
+    Element ext;
+    if (m.trc.strategy == 461) {
+      ext = fullCircle(pe, std::fabs(last.r1));
+    } else {
+      ext.p0 = last.raw.p1;
+      ext.p1 = last.raw.p1 + last.programmed.endTangent();
+    }
+    const long oldest = count_ + 1 - settings_.check_blocks;
+    std::optional<std::pair<size_t, Vec2>> found;
+    for (size_t j = window_.size() - 1; j-- > 0;) {
+      const Piece& c = window_[j];
+      if (c.index < oldest) break;
+      if (!c.valid) continue;
+      std::optional<geom::Crossing> best;
+      for (const auto& x : geom::intersect(c.compensated, ext))
+        if (x.u1 > kEps && x.u1 < 1 + kEps && (ext.arc || x.u2 > -kEps) && (!best || x.u1 > best->u1))
+          best = x;
+      if (!best) continue;
+      found = {j, best->p};
+      if (m.trc.collision != CollisionCheck::Cdon) break;
+    }
+    if (found) {
+      window_[found->first].compensated.p1 = found->second;
+      omitAfter(found->first, found->second, false);
+    }
+  }
+  // G460: if the retraction line cuts the last equidistant before its end, that intersection
+  // replaces the normal point (details Q1).
+  Piece& fin = window_.back();
+  retract.p0 = fin.compensated.p1;
+  if (!fin.approach && geom::length(retract.p1 - retract.p0) > kEps) {
+    double best = -1;
+    for (const auto& x : geom::intersect(fin.compensated, retract))
+      if (x.u1 > -kEps && x.u1 < 1 - 1e-9 && x.u2 > 1e-9 && x.u2 < 1 + kEps && x.u1 > best) {
+        best = x.u1;
+        fin.compensated.p1 = x.p;
+      }
+    retract.p0 = fin.compensated.p1;
+  }
+  flushAll();
+  emit(toBlock(m, retract));
+  state_ = State::Off;
 }
 
 // KONT with the start point behind the contour (details Q2): a straight line tangent to the
 // circle of radius R about the contour start point, then (G450) an arc on that circle to the
 // normal point of the first element, or (G451, below MD20210) the line extended to the first
 // equidistant. Both belong to the selection block.
-void RadiusCompensation::kontApproach(Piece& first) {
-  const Vec2 p0 = toElement(selection_).p0;
+void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
+  const Vec2 p0 = approach.programmed.p0;
   const Vec2 p1 = first.programmed.p0;
-  const double r = std::fabs(settings_.radius), s = side();
+  const double r = std::fabs(settings_.radius), s = first.side;
   std::optional<Vec2> t = tangentPoint(p0, p1, r, s, true);
   if (!t)
     throw AlarmError(10755,
@@ -377,7 +591,7 @@ void RadiusCompensation::kontApproach(Piece& first) {
   Element line;
   line.p0 = p0;
   line.p1 = *t;
-  const Vec2 dir = geom::length(*t - p0) > 0 ? (1.0 / geom::length(*t - p0)) * (*t - p0) : Vec2{1, 0};
+  const Vec2 dir = unit(*t - p0);
   const double angle = std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(dir, first.programmed.startTangent())))) * kDeg;
   if (settings_.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
     std::optional<geom::Crossing> best;
@@ -385,22 +599,16 @@ void RadiusCompensation::kontApproach(Piece& first) {
       if (x.u1 > kEps && x.u2 < kEps && (!best || geom::length(x.p - p1) < geom::length(best->p - p1)))
         best = x;
     if (best) {
-      line.p1 = best->p;
+      approach.compensated.p1 = best->p;
       first.compensated.p0 = best->p;
-      emit(toBlock(selection_, line));
-      emitWaiting(best->p);
-      pending_ = first;
-      dummy_blocks_ = 0;
-      state_ = State::On;
       return;
     }
   }
   if (settings_.corner == CornerMode::TransitionCircle && settings_.disc > 0)
     notModelled(fmt::format("DISC={} (transition curve other than a circle)", settings_.disc));
-  MotionBlock lb = toBlock(selection_, line);
-  PlaneAxes pa = planeAxes(lb.plane);
-  lb.end[pa.applicate] = lb.start[pa.applicate];  // the applicate moves with the circle
-  emit(lb);
+  PlaneAxes pa = planeAxes(selection_.plane);
+  approach.compensated.p1 = *t;
+  approach.block.end[pa.applicate] = approach.block.start[pa.applicate];  // moves with the circle
   Element arc;
   arc.arc = true;
   arc.p0 = *t;
@@ -408,24 +616,20 @@ void RadiusCompensation::kontApproach(Piece& first) {
   arc.c = p1;
   arc.ccw = s < 0;
   MotionBlock ab = toBlock(selection_, arc);
-  ab.start[pa.applicate] = lb.end[pa.applicate];
+  ab.start[pa.applicate] = approach.block.end[pa.applicate];
   ab.centre[pa.applicate] = ab.start[pa.applicate];
-  emit(ab);
-  emitWaiting(arc.p1);
-  pending_ = first;
-  dummy_blocks_ = 0;
-  state_ = State::On;
+  first.transition = ab;
 }
 
 // KONT retraction with the end point behind the contour (details Q2): from the normal point of
 // the last element, an arc about its end point to the tangent point of the line through the
 // programmed end point (G450), or the last equidistant extended to that line (G451); then the
 // straight line to the programmed end point. Both belong to the G40 block.
-void RadiusCompensation::kontRetraction(const MotionBlock& m) {
-  Piece last = *pending_;
+bool RadiusCompensation::kontRetraction(const MotionBlock& m) {
+  Piece& last = window_.back();
   const Vec2 pe = last.programmed.p1;
   const Vec2 p2 = toElement(m).p1;
-  const double r = std::fabs(settings_.radius), s = side();
+  const double r = std::fabs(last.r1), s = last.side;
   std::optional<Vec2> t = tangentPoint(p2, pe, r, s, false);
   if (!t)
     raise(10756, "deactivation of tool radius compensation via KONT not possible at programmed end point");
@@ -433,7 +637,7 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   line.p0 = *t;
   line.p1 = p2;
   PlaneAxes pa = planeAxes(m.plane);
-  const Vec2 dir = (1.0 / geom::length(p2 - *t)) * (p2 - *t);
+  const Vec2 dir = unit(p2 - *t);
   const double angle = std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(last.programmed.endTangent(), dir)))) * kDeg;
   if (m.trc.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
     std::optional<geom::Crossing> best;
@@ -442,19 +646,15 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
         best = x;
     if (best) {
       last.compensated.p1 = best->p;
-      emitPiece(last);
-      emitWaiting(best->p);
       line.p0 = best->p;
+      flushAll();
       emit(toBlock(m, line));
-      pending_.reset();
       state_ = State::Off;
-      return;
+      return true;
     }
   }
   if (m.trc.corner == CornerMode::TransitionCircle && m.trc.disc > 0)
     notModelled(fmt::format("DISC={} (transition curve other than a circle)", m.trc.disc));
-  emitPiece(last);
-  emitWaiting(last.compensated.p1);
   Element arc;
   arc.arc = true;
   arc.p0 = last.compensated.p1;
@@ -464,27 +664,28 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   MotionBlock ab = toBlock(m, arc);
   ab.start[pa.applicate] = ab.end[pa.applicate] = m.start[pa.applicate];
   ab.centre[pa.applicate] = ab.start[pa.applicate];
+  flushAll();
   emit(ab);
   emit(toBlock(m, line));
-  pending_.reset();
   state_ = State::Off;
+  return true;
 }
 
 void RadiusCompensation::finish() {
   if (state_ == State::Selecting) {
     // No contour element follows the selection block: it ends on its own normal.
-    Piece only = compensate(selection_);
+    const double r = std::fabs(settings_.radius);
+    Piece only = compensate(selection_, r, r);
     Element approach;
     approach.p0 = only.programmed.p0;
     approach.p1 = only.compensated.p1;
     emit(toBlock(selection_, approach));
-    emitWaiting(approach.p1);
-  } else if (state_ == State::On && pending_) {
-    emitPiece(*pending_);
-    emitWaiting(pending_->compensated.p1);
+    for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
+  } else if (state_ == State::On) {
+    flushAll();
   }
   waiting_.clear();
-  pending_.reset();
+  window_.clear();
   state_ = State::Off;
 }
 

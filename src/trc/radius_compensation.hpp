@@ -1,15 +1,15 @@
 // Tool radius compensation 2D (W1 2.4, spec §5, details Q1-Q9): a streaming stage between the
-// interpreter and the placement. It keeps one compensated element back until the next one is
-// known, resolves the corner between them and passes the result on.
+// interpreter and the placement.
 //
-// Modelled: G41/G42 in G17/G18/G19 for lines, arcs and helices (the applicate passes through);
-// NORM approach and retraction, and KONT where it equals NORM (start/end point not behind the
-// contour); outside corners with G450 (transition circle about the corner point, belonging to
-// the next block) and G451 (intersection; circle at or beyond MD20210), flat corners below
-// MD20230 by intersection; inside corners by the intersection with the neighbouring block;
-// blocks without plane motion between two elements (up to MD20250, else alarm 10762).
-// Everything else raises an alarm naming it (99010 where the control has a behaviour that
-// ncoffset does not reproduce yet), never a silently different path.
+// It keeps a window of compensated elements whose end points may still change: the last
+// MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS traversing blocks. Each new element is joined to the
+// previous one (inside corner: intersection; outside corner: G450 circle / G451 intersection,
+// MD20210/MD20230); when two consecutive equidistants do not meet, or with CDON always, the
+// new element is intersected with earlier elements of the window (bottleneck detection, §5.5):
+// the elements in between are omitted with warning 10763 and their other actions run at the
+// intersection. An element leaves the window (is written) once no later block can reach it;
+// a junction still open then is alarm 10751. G461/G462 extend the approach and retraction
+// blocks by a circle / straight line for that search (§5.3).
 #pragma once
 
 #include <optional>
@@ -17,6 +17,7 @@
 
 #include "geom/contour.hpp"
 #include "place/placement.hpp"
+#include "trc/piece_window.hpp"
 
 namespace ncoffset::trc {
 
@@ -34,46 +35,67 @@ class RadiusCompensation {
  private:
   enum class State { Off, Selecting, On };
 
-  // One contour element with the block it came from (for line, feed, frame, applicate).
+  // One element of the window: a traversing block, or the approach line of the selection
+  // block (index 0).
   struct Piece {
     place::MotionBlock block;
     geom::Element programmed;
-    geom::Element compensated;
-    double r0 = 0, r1 = 0;  // compensation value at the start and the end (a D change in a
-                            // line spreads the change over the block, details Q8)
+    geom::Element compensated;  // start and end as far as they are known
+    geom::Element raw;          // the whole equidistant (before corners trimmed it)
+    double r0 = 0, r1 = 0;      // compensation value at the start and the end (D change, Q8)
+    double side = 1;            // +1: tool left of the travel, -1: right
+    long index = 0;             // traversing blocks since the selection (approach = 0)
+    bool valid = true;          // has an equidistant (an inside arc smaller than R has none)
+    bool open_before = false;   // no intersection with the previous element (yet)
+    bool approach = false;      // the selection block's approach line
+    bool restart = false;       // the side changed in this block (G41 <-> G42, sign of R)
+    int strategy = 460;         // approach line: G460/G461/G462
+    std::optional<place::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
+    std::vector<place::MotionBlock> waiting;       // blocks without plane motion after it
   };
 
   geom::Element toElement(const place::MotionBlock& m) const;
   place::MotionBlock toBlock(const place::MotionBlock& like, const geom::Element& e) const;
+  // A block of `like` that keeps its applicate motion but stands at plane point `at`.
+  place::MotionBlock atPoint(const place::MotionBlock& like, geom::Vec2 at) const;
   void emit(const place::MotionBlock& m) { out_.motion(m); }
   void emitPiece(const Piece& p);
-  void emitWaiting(geom::Vec2 at);
   Piece compensate(const place::MotionBlock& m, double r0, double r1) const;
-  Piece compensate(const place::MotionBlock& m) const {
-    double r = std::fabs(settings_.radius);
-    return compensate(m, r, r);
-  }
   // The equidistant at the constant value the corner calculation uses (details Q8: the end
   // value of the first element, the start value of the second).
   geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
-  // A new compensation value in a line spreads over that block (details Q8).
-  Piece compensateWithChange(const place::MotionBlock& m);
-  void corner(Piece& next);
-  // Ends `cur` and starts `next` at x, passes `cur` and the waiting blocks on; `next` waits.
-  void joinAt(Piece& cur, Piece& next, geom::Vec2 x);
-  void kontApproach(Piece& first);
-  void kontRetraction(const place::MotionBlock& m);
+  // The next element with its compensation value (a change spreads over the block, Q8) and
+  // side (a change of side starts anew at the block's start, like a selection).
+  Piece compensateNext(const place::MotionBlock& m);
+  // Joins `next` to the last element of the window (corner).
+  void connect(Piece& cur, Piece& next);
+  // Bottleneck detection: intersects `next` with earlier elements of the window.
+  void bridge(Piece& next);
+  // Omits the window's elements after position `keep` (but the last one if `keep_last`); `at`
+  // is where their other actions run.
+  void omitAfter(size_t keep, geom::Vec2 at, bool keep_last);
+  // Raises 10751 for a junction that no later block can close any more.
+  void checkOpen(long next_index) const;
+  // Writes the elements no later block can change.
+  void release();
+  void flushAll();
+  void startWindow(Piece approach, Piece first);
+  void kontApproach(Piece& approach, Piece& first);
+  bool kontRetraction(const place::MotionBlock& m);
+  void retract(const place::MotionBlock& m);
   void checkSameSettings(const place::MotionBlock& m) const;
   bool planeMotion(const place::MotionBlock& m) const;
-  double side() const;  // +1: compensated to the left of travel, -1: right
+  double sideOf(const TrcSettings& t) const;  // +1: compensated to the left of travel
+  double side() const { return sideOf(settings_); }
 
   place::Placement& out_;
   State state_ = State::Off;
-  place::MotionBlock selection_;      // the G41/G42 block waiting for the first element
-  std::optional<Piece> pending_;      // the last compensated element, end not final yet
-  std::vector<place::MotionBlock> waiting_;  // blocks without plane motion after pending_
+  place::MotionBlock selection_;             // the G41/G42 block waiting for the first element
+  std::vector<place::MotionBlock> waiting_;  // blocks without plane motion after the selection
+  PieceWindow<Piece> window_;
+  long count_ = 0;                           // traversing blocks since the selection
   int dummy_blocks_ = 0;
-  TrcSettings settings_;              // of the selection
+  TrcSettings settings_;                     // of the last block
 };
 
 }  // namespace ncoffset::trc

@@ -1,0 +1,47 @@
+// A ring buffer for the look-ahead window of radius compensation: elements are appended at the
+// back, written from the front and omitted from the back. Slots are reused (with the capacity
+// of their vectors), so a long program allocates nothing per block once the window has grown
+// to its size (at most MD20240 + 2 elements).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace ncoffset::trc {
+
+template <typename T>
+class PieceWindow {
+ public:
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  T& operator[](size_t i) { return slots_[(head_ + i) % slots_.size()]; }
+  const T& operator[](size_t i) const { return slots_[(head_ + i) % slots_.size()]; }
+  T& front() { return (*this)[0]; }
+  T& back() { return (*this)[size_ - 1]; }
+  // A slot at the back to fill (it may hold an old element: the caller assigns all of it).
+  T& pushBack() {
+    if (size_ == slots_.size()) grow();
+    ++size_;
+    return back();
+  }
+  void popFront() {
+    head_ = (head_ + 1) % slots_.size();
+    --size_;
+  }
+  // Keeps the first n elements.
+  void truncate(size_t n) { size_ = n < size_ ? n : size_; }
+  void clear() { size_ = 0; head_ = 0; }
+
+ private:
+  void grow() {
+    std::vector<T> bigger(slots_.empty() ? 8 : slots_.size() * 2);
+    for (size_t i = 0; i < size_; ++i) bigger[i] = std::move((*this)[i]);
+    slots_ = std::move(bigger);
+    head_ = 0;
+  }
+
+  std::vector<T> slots_;
+  size_t head_ = 0, size_ = 0;
+};
+
+}  // namespace ncoffset::trc
