@@ -2,6 +2,10 @@
 
 #include <fmt/compile.h>
 
+#include <algorithm>
+
+#include "out/shortest_number.hpp"
+
 namespace ncoffset::out {
 
 
@@ -26,18 +30,32 @@ CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
 }
 
 void CsvWriter::segment(const Segment& s) {
-  auto& b = w_.buf();
-  auto it = fmt::appender(b);
-  // Shortest representation that round-trips ({fmt} default for double).
-  fmt::format_to(it, FMT_COMPILE("{},{},{},{},{},"), s.line, motionName(s.motion), s.end.x + 0.0,
-                 s.end.y + 0.0, s.end.z + 0.0);
-  if (s.motion == Motion::G2 || s.motion == Motion::G3)
-    fmt::format_to(it, FMT_COMPILE("{},{},{},"), s.centre.x + 0.0, s.centre.y + 0.0,
-                   s.centre.z + 0.0);
-  else
-    fmt::format_to(it, FMT_COMPILE(",,,"));
-  if (s.has_feed) fmt::format_to(it, FMT_COMPILE("{}"), s.feed);
-  b.push_back('\n');
+  // One row at a time into a local array (at most 9 fields of 32 characters), appended once.
+  char row[320];
+  fmt::format_int line(s.line);
+  char* p = std::copy(line.data(), line.data() + line.size(), row);
+  const char* m = motionName(s.motion);
+  *p++ = ',';
+  *p++ = m[0];
+  *p++ = m[1];
+  for (double v : {s.end.x, s.end.y, s.end.z}) {
+    *p++ = ',';
+    p = writeShortest(p, v);
+  }
+  if (s.motion == Motion::G2 || s.motion == Motion::G3) {
+    for (double v : {s.centre.x, s.centre.y, s.centre.z}) {
+      *p++ = ',';
+      p = writeShortest(p, v);
+    }
+  } else {
+    *p++ = ',';
+    *p++ = ',';
+    *p++ = ',';
+  }
+  *p++ = ',';
+  if (s.has_feed) p = writeShortest(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
+  *p++ = '\n';
+  w_.buf().append(row, p);
   w_.lineDone();
 }
 

@@ -14,8 +14,8 @@ class PieceWindow {
  public:
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
-  T& operator[](size_t i) { return slots_[(head_ + i) % slots_.size()]; }
-  const T& operator[](size_t i) const { return slots_[(head_ + i) % slots_.size()]; }
+  T& operator[](size_t i) { return slots_[(head_ + i) & (slots_.size() - 1)]; }
+  const T& operator[](size_t i) const { return slots_[(head_ + i) & (slots_.size() - 1)]; }
   T& front() { return (*this)[0]; }
   T& back() { return (*this)[size_ - 1]; }
   // A slot at the back to fill (it may hold an old element: the caller assigns all of it).
@@ -25,7 +25,7 @@ class PieceWindow {
     return back();
   }
   void popFront() {
-    head_ = (head_ + 1) % slots_.size();
+    head_ = (head_ + 1) & (slots_.size() - 1);
     --size_;
   }
   // Keeps the first n elements.
@@ -33,6 +33,7 @@ class PieceWindow {
   void clear() { size_ = 0; head_ = 0; }
 
  private:
+  // The capacity stays a power of two, so an index is a mask, not a division.
   void grow() {
     std::vector<T> bigger(slots_.empty() ? 8 : slots_.size() * 2);
     for (size_t i = 0; i < size_; ++i) bigger[i] = std::move((*this)[i]);

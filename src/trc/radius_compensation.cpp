@@ -63,25 +63,25 @@ Element fullCircle(Vec2 c, double r) {
   return e;
 }
 
-// Bounding boxes of two elements overlap (arcs: their whole circle), a cheap test before
-// intersecting them.
-bool overlap(const Element& a, const Element& b) {
-  auto box = [](const Element& e, double lo[2], double hi[2]) {
+// The bounding box of an element (arcs: their whole circle), for a cheap test before
+// intersecting two elements.
+struct Box {
+  double lo_a, lo_o, hi_a, hi_o;
+  explicit Box(const Element& e) {
     if (e.arc) {
       const double r = geom::length(e.p0 - e.c);
-      lo[0] = e.c.a - r, hi[0] = e.c.a + r, lo[1] = e.c.o - r, hi[1] = e.c.o + r;
+      lo_a = e.c.a - r, hi_a = e.c.a + r, lo_o = e.c.o - r, hi_o = e.c.o + r;
     } else {
-      lo[0] = std::fmin(e.p0.a, e.p1.a), hi[0] = std::fmax(e.p0.a, e.p1.a);
-      lo[1] = std::fmin(e.p0.o, e.p1.o), hi[1] = std::fmax(e.p0.o, e.p1.o);
+      lo_a = std::fmin(e.p0.a, e.p1.a), hi_a = std::fmax(e.p0.a, e.p1.a);
+      lo_o = std::fmin(e.p0.o, e.p1.o), hi_o = std::fmax(e.p0.o, e.p1.o);
     }
-  };
-  double la[2], ha[2], lb[2], hb[2];
-  box(a, la, ha);
-  box(b, lb, hb);
-  constexpr double kSlack = 1e-6;
-  return la[0] <= hb[0] + kSlack && lb[0] <= ha[0] + kSlack && la[1] <= hb[1] + kSlack &&
-         lb[1] <= ha[1] + kSlack;
-}
+  }
+  bool overlaps(const Box& b) const {
+    constexpr double kSlack = 1e-6;
+    return lo_a <= b.hi_a + kSlack && b.lo_a <= hi_a + kSlack && lo_o <= b.hi_o + kSlack &&
+           b.lo_o <= hi_o + kSlack;
+  }
+};
 
 [[noreturn]] void collision(int line, int check_blocks) {
   throw AlarmError(10751,
@@ -419,6 +419,7 @@ void RadiusCompensation::bridge(Piece& next) {
   // (W1 2.4.8, details Q5).
   const long oldest = next.index - settings_.check_blocks;
   const Element later = cornerEquidistant(next, false);
+  const Box later_box(later);
   std::optional<std::pair<size_t, Vec2>> found;
   for (size_t j = window_.size() - 2; j-- > 0;) {
     const Piece& c = window_[j];
@@ -427,20 +428,21 @@ void RadiusCompensation::bridge(Piece& next) {
     // The element itself, then for an approach line with G461 a circle of the tool radius about
     // the end point of the uncompensated approach block, with G462 the line's extension; both
     // only to find an intersection (W1 2.4.10, details Q7).
-    Element targets[2] = {c.compensated, {}};
+    Element extension_element;
     int n_targets = 1;
     if (c.approach && c.strategy == 461) {
-      targets[n_targets++] = fullCircle(c.programmed.p1, std::fabs(next.r0));
+      extension_element = fullCircle(c.programmed.p1, std::fabs(next.r0));
+      ++n_targets;
     } else if (c.approach && c.strategy == 462) {
-      targets[1].p0 = c.compensated.p1;
-      targets[1].p1 = c.compensated.p1 + unit(c.compensated.p1 - c.compensated.p0);
+      extension_element.p0 = c.compensated.p1;
+      extension_element.p1 = c.compensated.p1 + unit(c.compensated.p1 - c.compensated.p0);
       ++n_targets;
     }
     std::optional<geom::Crossing> best;
     for (int k = 0; k < n_targets; ++k) {
-      const Element& target = targets[k];
       const bool extension = k > 0;
-      if (!extension && !overlap(target, later)) continue;
+      const Element& target = extension ? extension_element : c.compensated;
+      if (!extension && !Box(target).overlaps(later_box)) continue;
       for (const auto& x : geom::intersect(target, later)) {
         const bool on_target = extension ? (!target.arc ? x.u1 > -kEps : true)
                                          : x.u1 > kEps && x.u1 < 1 - 1e-9;

@@ -1,0 +1,38 @@
+#include "out/shortest_number.hpp"
+
+#include <fmt/compile.h>
+
+#include <cmath>
+
+namespace ncoffset::out {
+
+char* writeShortest(char* out, double v) {
+  v += 0.0;  // -0 prints as 0
+  const double a = std::fabs(v);
+  // {fmt} writes fixed notation from 1e-4 up to 1e16; below 1e9 doubles are closer than 1e-6
+  // to each other, so a value equal to n / 1e6 (n an integer) has no shorter representation
+  // than n / 1e6 with its trailing zeros removed, and that text reads back as n / 1e6 = v
+  // (the division is correctly rounded, as is reading the text).
+  if (a < 1e9 && (a >= 1e-4 || a == 0)) {
+    const double scaled = a * 1e6 + 0.5;  // < 1e15 + 0.5: exact enough to round
+    const auto m = static_cast<unsigned long long>(scaled);
+    const double back = static_cast<double>(m) / 1e6;
+    if ((v < 0 ? -back : back) == v) {
+      if (v < 0) *out++ = '-';
+      fmt::format_int whole(m / 1000000);
+      for (const char* d = whole.data(); d != whole.data() + whole.size(); ++d) *out++ = *d;
+      unsigned frac = static_cast<unsigned>(m % 1000000);
+      if (frac) {
+        char digits[7] = {'.', '0', '0', '0', '0', '0', '0'};
+        int len = 7;
+        for (int i = 6; i >= 1; --i, frac /= 10) digits[i] = static_cast<char>('0' + frac % 10);
+        while (digits[len - 1] == '0') --len;
+        for (int i = 0; i < len; ++i) *out++ = digits[i];
+      }
+      return out;
+    }
+  }
+  return fmt::format_to(out, FMT_COMPILE("{}"), v);
+}
+
+}  // namespace ncoffset::out

@@ -1,0 +1,53 @@
+// appendShortest must write exactly what {fmt}'s "{}" writes for every double (the CSV contract
+// asks for the shortest round-trip representation); the fast path only saves time.
+#include "out/shortest_number.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace ncoffset::out {
+namespace {
+
+std::string viaFast(double v) {
+  fmt::memory_buffer b;
+  appendShortest(b, v);
+  return fmt::to_string(b);
+}
+
+std::string viaFmt(double v) { return fmt::format("{}", v + 0.0); }
+
+TEST(ShortestNumber, SameTextAsFmtForTypicalValues) {
+  for (double v : {0.0, -0.0, 1.0, -1.0, 0.5, 10.25, 41.33974596215561, 15.527864045000421,
+                   3.944271909999159, 0.1, 0.2, 0.3, 1e-4, 9.9999e-5, 1e-5, 123456.789012,
+                   999999999.999999, 1e9, -1e9, 1e15, 1e16, 1e300, 5e-324, 0.000125, 7.000001,
+                   -2.5e-4, 100000000.0, 12345678.9, 0.1 + 0.2})
+    EXPECT_EQ(viaFast(v), viaFmt(v)) << v;
+}
+
+TEST(ShortestNumber, SameTextAsFmtForRandomValues) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> any(-1e6, 1e6);
+  std::uniform_int_distribution<long long> micro(-1000000000000LL, 1000000000000LL);
+  std::uniform_int_distribution<int> decimals(0, 9);
+  for (int i = 0; i < 200000; ++i) {
+    double v = any(rng);
+    ASSERT_EQ(viaFast(v), viaFmt(v)) << v;
+    // Values with few decimals (the fast path) and their neighbours (not on it).
+    double d = static_cast<double>(micro(rng)) / std::pow(10.0, decimals(rng));
+    ASSERT_EQ(viaFast(d), viaFmt(d)) << d;
+    double n = std::nextafter(d, 1e300);
+    ASSERT_EQ(viaFast(n), viaFmt(n)) << n;
+  }
+}
+
+TEST(ShortestNumber, NonFiniteAsFmt) {
+  EXPECT_EQ(viaFast(std::numeric_limits<double>::infinity()), viaFmt(std::numeric_limits<double>::infinity()));
+  EXPECT_EQ(viaFast(std::nan("")), viaFmt(std::nan("")));
+}
+
+}  // namespace
+}  // namespace ncoffset::out
