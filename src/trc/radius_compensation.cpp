@@ -373,6 +373,20 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
     cur.compensated.p1 = next.compensated.p0 = best->p;
     return;
   }
+  // An outside corner by its tangents whose curved equidistants still cross within both
+  // elements (an arc bending back over its neighbour): the tool cannot pass the crossing
+  // without cutting into the other element, so it is treated like an inside corner [D].
+  if (cur.programmed.arc || next.programmed.arc) {
+    std::optional<geom::Crossing> best;
+    for (const auto& x : geom::intersect(e1, e2))
+      if (x.u1 > kEps && x.u1 < 1 - kEps && x.u2 > kEps && x.u2 < 1 - kEps &&
+          (!best || x.u2 < best->u2))
+        best = x;
+    if (best) {
+      cur.compensated.p1 = next.compensated.p0 = best->p;
+      return;
+    }
+  }
   // Outside corner (details Q3/Q4): G450 circle unless flatter than MD20230; G451 intersection
   // unless the contour angle reaches MD20210.
   const double angle = reversal ? 180.0 : std::acos(std::fmax(-1.0, std::fmin(1.0, d))) * kDeg;

@@ -257,7 +257,7 @@ def approach(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=
              side=None, write_g34=True, disr, discl=None, disrp=None, fad=None, f_sar=None,
              prev=("G0", 300.0), p0, p4, cont_end, p4_src="sar", pre_dummies=(),
              post_dummies=(), setup=(), sar_words="", trailer=(), trailer_rows=(),
-             extra_hdr=()):
+             extra_hdr=(), write_side=True, row_map=None):
     s = {41: 1, 42: -1, 40: 0}[trc]
     p0p, p4p = p0[:2], p4[:2]
     t = unit(vsub(cont_end, p4p))
@@ -328,7 +328,7 @@ def approach(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=
     c1p, c4p = comp(p3p, t3), comp(p4p, t)
     cend = comp(cont_end, t)
     if s:
-        hdr.append(f"TRC: curve start tangent t3 = {P(t3)} -> C1 = C3 = P3 + {'+' if s > 0 else '-'}"
+        hdr.append(f"TRC: curve start tangent t3 = {P(t3)} -> C1 = C3 = P3 {'+' if s > 0 else '-'} "
                    f"R*n_L(t3) = {P(c1p)} (NORM end of the selection sub-block); C4 = P4 "
                    f"{'+' if s > 0 else '-'} R*n_L(t) = {P(c4p)}; contour end {P(cend)}.")
         if M is not None:
@@ -385,7 +385,7 @@ def approach(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=
     cr = cend if s else cont_end
     rows.append(("tan", "G1", (*cr, app4), None, f_after))
     tab.append(f"Tangent block G1 to {P((*cr, app4))} F{num(f_after)} (F of the SAR block stays "
-               "modal, FAD does not)" + (" - ends on its normal at program end" if s else ""))
+               "modal, FAD does not)" + (" - compensated, ends on its normal" if s else ""))
     hdr.append("Sub-blocks:")
     hdr += ["  " + x for x in tab]
     # --- body
@@ -393,8 +393,10 @@ def approach(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=
     sar = ("" if not s else f"G4{1 if s > 0 else 2} ") + f"G{kind}47"
     if write_g34:
         sar += f" G{g34}"
-    if side is not None:
+    if side is not None and write_side:
         sar += f" G{side}"
+    if side is not None and not write_side:
+        hdr.append(f"G{side} is the initial setting and is not written in the program.")
     sar += param("DISR", disr) + param("DISCL", discl) + param("DISRP", disrp) + param("FAD", fad)
     if p4_src == "sar":
         sar += " " + words(plane, *p4)
@@ -415,7 +417,11 @@ def approach(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=
     body.append("@tan G1 " + words(plane, *cont_end))
     body += list(trailer)
     body.append("M30")
-    allrows = [("p0", fast, p0, None, fprev)] + rows + list(trailer_rows)
+    allrows = [("p0", fast, p0, None, fprev)] + rows
+    if row_map is not None:
+        allrows = [(lab, m, row_map(p), None if c is None else row_map(c), f)
+                   for lab, m, p, c, f in allrows]
+    allrows += list(trailer_rows)
     add(name, plane, hdr, body, allrows, meta=(checks, spec, readings))
     return dict(p3=p3, p4=p4_, c4=c4p, cend=cend, app4=app4, f_after=f_after)
 
@@ -425,10 +431,16 @@ def approach(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=
 
 def retraction(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=2, g34=340,
                side=None, disr, discl=None, disrp=None, fad=None, f_sar=None, sar_motion="G1",
-               write_motion=False, start, sel, p4, p0, prev_f=400.0, extra_hdr=()):
+               write_motion=False, start, sel=None, p4, p0, prev_f=400.0, extra_hdr=(),
+               write_side=True):
     s = {41: 1, 42: -1, 40: 0}[trc]
     p0p, p4p = p0[:2], p4[:2]
-    t = unit(vsub(p4p, sel))
+    if sel is None:
+        assert s == 0
+        sel_pt = start[:2]
+    else:
+        sel_pt = sel
+    t = unit(vsub(p4p, sel_pt))
     n = nl(t)
     app4 = p4[2]
     hdr = [f"{name}: {title}", f"Spec: {spec}. Readings (README): {', '.join(readings)}.",
@@ -437,7 +449,7 @@ def retraction(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kin
                                          "retraction block: its last sub-block with plane motion "
                                          "(P1->P0) is the NORM deselection block (reading K1)."
                                          if s else "G40: no compensation."))
-    hdr.append(f"Contour: {P((*sel, app4))} -> P4 = {P(p4)} (G1 F{num(prev_f)}), end tangent t = "
+    hdr.append(f"Contour: {P((*sel_pt, app4))} -> P4 = {P(p4)} (G1 F{num(prev_f)}), end tangent t = "
                f"{P(t)}, n_L = {P(n)}. P0 = {P(p0)} programmed in the SAR block (explicit).")
     hdr += list(extra_hdr)
     if kind == 1:
@@ -479,7 +491,7 @@ def retraction(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kin
                f"P1 = {P((*p3p, app1))}, P0 = {P(p0)}"
                + ("; helix" if kind > 1 and abs(app3 - app4) > EPS else "") + ".")
     comp = (lambda p, tan: vadd(p, vmul(s * R, nl(tan))))
-    c3p, c4p, csel = comp(p3p, t3), comp(p4p, t), comp(sel, t)
+    c3p, c4p, csel = comp(p3p, t3), comp(p4p, t), comp(sel_pt, t)
     if s:
         hdr.append(f"TRC: selection ends at {P(csel)}, contour at C4 = {P(c4p)}; curve end tangent "
                    f"at P3 = {P(t3)} -> C3 = {P(c3p)}; lifts run at C3; deselection C3 -> P0.")
@@ -529,18 +541,25 @@ def retraction(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kin
     hdr.append("Sub-blocks:")
     hdr += ["  " + x for x in tab]
     sarw = ("G40 " if s else "") + (f"{sar_motion} " if write_motion else "") + f"G{kind}48 G{g34}"
-    if side is not None:
+    if side is not None and write_side:
         sarw += f" G{side}"
+    if side is not None and not write_side:
+        hdr.append(f"G{side} is the initial setting and is not written in the program.")
     sarw += param("DISR", disr) + param("DISCL", discl) + param("DISRP", disrp) + param("FAD", fad)
     sarw += " " + words(plane, *p0)
     if f_sar is not None:
         sarw += f" F{num(f_sar)}"
-    body = tool(R) + [f"@g0 G{plane} G90 G0 {words(plane, *start)}",
-                      f"@sel {'G4%d ' % (1 if s > 0 else 2) if s else ''}G1 {words(plane, *sel)} "
-                      f"F{num(prev_f)}",
-                      f"@c1 {words(plane, *p4p)}", "@sar " + sarw, "M30"]
-    allrows = [("g0", "G0", start, None, None), ("sel", "G1", (*csel, start[2]), None, prev_f),
-               ("c1", "G1", (*ce, app4), None, prev_f)] + rows
+    body = tool(R) + [f"@g0 G{plane} G90 G0 {words(plane, *start)}"]
+    allrows = [("g0", "G0", start, None, None)]
+    if sel is not None:
+        body.append(f"@sel {'G4%d ' % (1 if s > 0 else 2) if s else ''}G1 {words(plane, *sel)} "
+                    f"F{num(prev_f)}")
+        body.append(f"@c1 {words(plane, *p4p)}")
+        allrows.append(("sel", "G1", (*csel, start[2]), None, prev_f))
+    else:
+        body.append(f"@c1 G1 {words(plane, *p4p)} F{num(prev_f)}")
+    body += ["@sar " + sarw, "M30"]
+    allrows += [("c1", "G1", (*ce, app4), None, prev_f)] + rows
     assert abs(start[2] - app4) < EPS
     add(name, plane, hdr, body, allrows, meta=(checks, spec, readings))
 
@@ -584,11 +603,16 @@ add("s1_pm_g247_g341", 17, S1_HDR,
           ["V1", "V2", "V3", "V6", "S1"]))
 
 
+def wrapped_len(header):
+    return sum(max(1, len(textwrap.wrap("; " + h, 98, break_long_words=False,
+                                        break_on_hyphens=False))) for h in header)
+
+
 def s2(name, variant):
     hdr = [f"{name}: PM-NC 12/2019 p278 example (spec 6.6 S-2), form '{variant}': G41 G147,",
            "G340 (default), DISCL=3, DISR=13, F1000, R = 7. The three forms of the manual must give",
            "the same path; only the line of the curve row differs (reading V5: the curve belongs to",
-           "the block that supplies P4).",
+           "the block that supplies P4). Line numbers are aligned between the three forms.",
            CONV, PLANE_TXT[17] + ".",
            "P0 = (10,0,30) (after N20). P4 = (40,-10,0). Tangent block N50: t = (1,0), n_L = (0,1).",
            "G147: line length R + DISR = 20 -> P3 (plane) = P4 - 20*t = (20,-10).",
@@ -602,18 +626,19 @@ def s2(name, variant):
            "N50 G1 X50 -> (50,-3,0) F1000."]
     if variant == "Z in the SAR block, X/Y in N40":
         body = ["@n30 N30 G41 G147 DISCL=3 DISR=13 Z=0 F1000", "@n40 N40 G1 X40 Y-10"]
-        hdr.append("The SAR block programs only the applicate: P4 gets X/Y from N40 and Z0 from N30"
-                   " (V5); the curve row is N40's.")
+        hdr.append("The SAR block programs only the applicate: P4 gets X/Y from N40, Z0 from N30 (V5).")
         dl = "n40"
     elif variant == "P4 in the SAR block":
-        body = ["@n30 N30 G41 G147 DISCL=3 DISR=13 X40 Y-10 Z0 F1000"]
+        body = ["@n30 N30 G41 G147 DISCL=3 DISR=13 X40 Y-10 Z0 F1000", "; (N40 merged into N30)"]
         hdr.append("P4 in the SAR block: the curve row is N30's.")
         dl = "n30"
     else:
         body = ["@n30 N30 G41 G147 DISCL=3 DISR=13 F1000", "@n40 N40 G1 X40 Y-10 Z0"]
-        hdr.append("The SAR block has no geometry axis: P4 is N40's end point; the curve row is"
-                   " N40's; N30's last (empty) sub-block gives no row.")
+        hdr.append("No geometry axis in N30: P4 = end of N40; N30's empty last sub-block: no row.")
         dl = "n40"
+    while wrapped_len(hdr) < 22:
+        hdr.append("(padding: same line numbers in the three forms)")
+    assert wrapped_len(hdr) == 22, wrapped_len(hdr)
     add(name, 17, hdr,
         ["$TC_DP1[1,1]=120", "$TC_DP6[1,1]=7", "@n10 N10 G90 G0 X0 Y0 Z30 D1 T1", "@n20 N20 X10"]
         + body + ["@n50 N50 G1 X50", "M30"],
@@ -655,7 +680,7 @@ approach("app_g147_negative_disr", 17,
          title="G147 with negative DISR, |DISR| < R: line length R + DISR = 2 (PM-F 11/2006 p372).",
          spec="6.1 (DISR)", readings=["V1", "V2"],
          checks="G147 DISR=-3 with R=5: L = 2",
-         trc=41, kind=1, g34=340, disr=-3, discl=1, f_sar=300,
+         trc=41, kind=1, g34=340, disr=-3, discl=1, f_sar=330,
          p0=(-20, -20, 10), p4=(0, 0, 0), cont_end=(0, 30))
 
 approach("app_g247_g340_g17_g42_helix", 17,
@@ -670,7 +695,7 @@ approach("app_g247_g341_g18_g42_g141", 18,
                "the outside of the arc, contour radius DISR - R.",
          spec="6.1 (G141, DISR for circles)", readings=["V1", "V2", "V3", "D1"],
          checks="G247 G341 G141+G42 G18: outside, r = DISR-R",
-         trc=42, kind=2, g34=341, side=141, disr=12, discl=5, fad=100, f_sar=300,
+         trc=42, kind=2, g34=341, side=141, disr=12, discl=5, fad=100, f_sar=280,
          p0=(40, 10, 25), p4=(0, 30, 0), cont_end=(-50, 30))
 
 approach("app_g247_g340_g19_g41_g142", 19,
@@ -689,25 +714,12 @@ approach("app_g247_g40_g143_left", 17,
          p0=(-20, 30, 15), p4=(10, 10, 0), cont_end=(50, 10))
 
 approach("app_g247_g40_g140_right", 18,
-         title="G247 without TRC and G140 (default, not written): behaves like G143 (no alarm); P0 "
-               "right of the tangent line -> G2; DISCL=AC(4) helix.",
-         spec="6.1 (G140 with G40)", readings=["V1", "V2", "D2", "D3", "H1"],
-         checks="G247 G340 G140->G143 G40 G18: P0 right -> G2 helix",
-         trc=40, kind=2, g34=340, side=None, disr=8, discl=("AC", 4), f_sar=150,
-         p0=(-10, -25, 12), p4=(0, 0, 0), cont_end=(30, 0),
-         extra_hdr=["No G14x in the block: G140 (initial setting) applies."])
-# side=None above only suppresses the word; the construction uses G140 -> see the patch below
-CASES.pop()
-approach("app_g247_g40_g140_right", 18,
          title="G247 without TRC and G140 (initial setting, not written): behaves like G143 (no "
                "alarm); P0 right of the tangent line -> G2; DISCL=AC(4) helix.",
          spec="6.1 (G140 with G40)", readings=["V1", "V2", "D2", "D3", "H1"],
          checks="G247 G340 G140->G143 G40 G18: P0 right -> G2 helix",
-         trc=40, kind=2, g34=340, side=140, disr=8, discl=("AC", 4), f_sar=150,
+         trc=40, kind=2, g34=340, side=140, write_side=False, disr=8, discl=("AC", 4), f_sar=150,
          p0=(-10, -25, 12), p4=(0, 0, 0), cont_end=(30, 0))
-_c = CASES[-1]
-CASES[-1] = (_c[0], _c[1], _c[2] + ["The program does not write G140: it is the initial setting."],
-             [b.replace(" G140", "") for b in _c[3]], *_c[4:])
 
 approach("app_g347_g341_g17_g41", 17,
          title="semicircle approach G347 in the plane (G341), G41 + G140 (inside, r = DISR + R), "
@@ -745,7 +757,7 @@ approach("app_disrp_incremental", 17,
          title="DISRP=10: P1 lies 10 above the plane of P4, so P0->P1 is not parallel to the plane.",
          spec="6.1 (DISRP), 6.2", readings=["V1", "V2", "D1"],
          checks="DISRP incremental: slanted P0->P1",
-         trc=41, kind=1, g34=340, disr=5, discl=2, disrp=10, fad=100, f_sar=300,
+         trc=41, kind=1, g34=340, disr=5, discl=2, disrp=10, fad=100, f_sar=320,
          p0=(-30, 20, 40), p4=(0, 0, 0), cont_end=(50, 0))
 
 approach("app_disrp_ac_g341", 18,
@@ -760,7 +772,7 @@ approach("app_discl0_p0_in_plane", 17,
                "(PM-F 11/2006 p372); no reading needed because P0.app = P4.app.",
          spec="6.1 (DISCL=0)", readings=["V1", "V2"],
          checks="DISCL=0 G340, P0 in the plane: 2 sub-blocks",
-         trc=41, kind=2, g34=340, side=140, disr=8, discl=0, fad=100, f_sar=300,
+         trc=41, kind=2, g34=340, side=140, disr=8, discl=0, fad=100, f_sar=310,
          p0=(-30, 30, 0), p4=(0, 0, 0), cont_end=(40, 0))
 
 approach("app_discl0_g340_p0_above", 17,
@@ -776,7 +788,7 @@ approach("app_discl_missing_g340", 18,
          title="no DISCL with G340 (G41 G247 G140): read as DISCL=0 (reading G2, flagged).",
          spec="6.1 (DISCL)", readings=["V1", "V2", "G2"],
          checks="DISCL not programmed = 0: circle in the plane, not a helix",
-         trc=41, kind=2, g34=340, side=140, disr=6, fad=70, f_sar=300,
+         trc=41, kind=2, g34=340, side=140, disr=6, fad=70, f_sar=290,
          p0=(30, -30, 20), p4=(0, 0, 0), cont_end=(-30, 0))
 
 approach("app_discl0_g341", 19,
@@ -793,7 +805,7 @@ approach("app_fad_pr", 17,
                "number only (reading F1).",
          spec="6.1 (FAD=PR)", readings=["V1", "V2", "V3", "F1"],
          checks="FAD=PR(..) value on the P2->P3 row",
-         trc=41, kind=1, g34=341, disr=4, discl=2, fad=("PR", 0.2), f_sar=300,
+         trc=41, kind=1, g34=341, disr=4, discl=2, fad=("PR", 0.2), f_sar=340,
          p0=(30, 20, 10), p4=(0, 0, 0), cont_end=(-40, 0))
 
 approach("app_fad_pm_g95", 17,
@@ -841,12 +853,12 @@ approach("app_other_words_in_sar_block", 17,
                "R1 is read back by a later G0 Z=R1.",
          spec="6.5 (other NC commands)", readings=["V1", "V2", "V3", "W1"],
          checks="M/S/R words in the SAR block do not change the path; R1 set",
-         trc=42, kind=1, g34=341, disr=4, discl=2, fad=90, f_sar=300, sar_words=" M3 S1000 R1=35",
+         trc=42, kind=1, g34=341, disr=4, discl=2, fad=90, f_sar=270, sar_words=" M3 S1000 R1=35",
          p0=(-30, -20, 10), p4=(0, 0, 0), cont_end=(30, 0),
          trailer=["@ret G40 G1 X40 Y-20", "@up G0 Z=R1"],
-         trailer_rows=[("ret", "G1", (40, -20, 0), None, 300), ("up", "G0", (40, -20, 35), None, None)],
+         trailer_rows=[("ret", "G1", (40, -20, 0), None, 270), ("up", "G0", (40, -20, 35), None, None)],
          extra_hdr=["After the contour: G40 G1 X40 Y-20 = NORM retraction from (30,-5) to "
-                    "(40,-20) F300; G0 Z=R1 -> (40,-20,35)."])
+                    "(40,-20) F270; G0 Z=R1 -> (40,-20,35)."])
 
 # ------------------------------------------------------------------------------------------
 # $P_APR / $P_AEP / $P_APDV, frames
@@ -856,15 +868,15 @@ approach("app_sysvars_papr_paep", 17,
                "by G0 moves after the contour (spec 6.4; details 4.1).",
          spec="6.4", readings=["V1", "V2", "H1", "P1"],
          checks="$P_APR/$P_AEP values (uncompensated) and $P_APDV",
-         trc=41, kind=2, g34=340, side=140, disr=8, discl=3, fad=100, f_sar=300,
+         trc=41, kind=2, g34=340, side=140, disr=8, discl=3, fad=100, f_sar=350,
          p0=(0, 20, 20), p4=(40, -10, 0), cont_end=(70, -10),
          trailer=["@ret G40 G1 X80 Y-30", "@up G0 Z50", "@apr G0 X=$P_APR[X] Y=$P_APR[Y] Z=$P_APR[Z]",
                   "@aep G0 X=$P_AEP[X] Y=$P_AEP[Y] Z=$P_AEP[Z]", "IF $P_APDV==1", "@dv G0 Z77",
                   "ENDIF"],
-         trailer_rows=[("ret", "G1", (80, -30, 0), None, 300), ("up", "G0", (80, -30, 50), None, None),
+         trailer_rows=[("ret", "G1", (80, -30, 0), None, 350), ("up", "G0", (80, -30, 50), None, None),
                        ("apr", "G0", (27, 3, 3), None, None), ("aep", "G0", (40, -10, 0), None, None),
                        ("dv", "G0", (40, -10, 77), None, None)],
-         extra_hdr=["Trailer: G40 G1 X80 Y-30 (NORM retraction F300), G0 Z50, then G0 to $P_APR = "
+         extra_hdr=["Trailer: G40 G1 X80 Y-30 (NORM retraction F350), G0 Z50, then G0 to $P_APR = "
                     "P3 = (27,3,3) (the compensated C3 would be (32,3,3)), G0 to $P_AEP = P4 = "
                     "(40,-10,0), and G0 Z77 because $P_APDV == 1."])
 
@@ -873,31 +885,23 @@ approach("app_frame_trans_paep", 17,
                "$P_AEP keep their old WCS values (FM-W1 11/2006 p70).",
          spec="6.4, 6.2 (frames)", readings=["V1", "V2", "P1"],
          checks="SAR in the WCS under a frame; $P_AEP unaffected by a later WCS change",
-         trc=40, kind=1, g34=340, disr=10, discl=2, f_sar=300,
+         trc=40, kind=1, g34=340, disr=10, discl=2, f_sar=260,
          p0=(-30, 20, 10), p4=(0, 0, 0), cont_end=(30, 0), setup=["TRANS X100"],
+         row_map=lambda p: (p[0] + 100, p[1], p[2]),
          trailer=["TRANS X0", "@apr G0 X=$P_APR[X] Y=$P_APR[Y] Z=$P_APR[Z]",
                   "@aep G0 X=$P_AEP[X] Y=$P_AEP[Y] Z=$P_AEP[Z]"],
          trailer_rows=[("apr", "G0", (-10, 0, 2), None, None), ("aep", "G0", (0, 0, 0), None, None)],
          extra_hdr=["All points below are WCS; the CSV (MCS) rows of the SAR part are shifted by "
                     "+100 in X (see the .expected). After TRANS X0 (frame = 0): G0 to $P_APR = "
                     "(-10,0,2) and to $P_AEP = (0,0,0) in the MCS."])
-# shift the SAR-part rows of this case by the frame (WCS -> MCS)
-_c = CASES[-1]
-_rows = [(lab, m, ((p[0] + 100, p[1], p[2]) if lab in ("p0", "sar", "tan") else p),
-          (None if c is None else (c[0] + 100, c[1], c[2])), f) for lab, m, p, c, f in _c[4]]
-CASES[-1] = (*_c[:4], _rows, *_c[5:])
-
 approach("app_frame_rot_z90", 17,
          title="SAR under ROT Z90: the construction runs in the WCS; MCS (x,y) = (-y_w, x_w).",
          spec="6.2 (rotating frames), 6.5", readings=["V1", "V2", "V3"],
          checks="SAR with a rotating frame",
          trc=41, kind=2, g34=341, side=140, disr=10, discl=("AC", 5), fad=200, f_sar=100,
          p0=(0, 0, 20), p4=(40, -10, 0), cont_end=(60, -10), setup=["ROT Z90"],
+         row_map=lambda p: (-p[1], p[0], p[2]),
          extra_hdr=["All points below are WCS; the .expected holds them rotated into the MCS."])
-_c = CASES[-1]
-_rot = (lambda p: (-p[1], p[0], p[2]))
-CASES[-1] = (*_c[:4], [(lab, m, _rot(p), None if c is None else _rot(c), f)
-                       for lab, m, p, c, f in _c[4]], *_c[5:])
 
 # ==========================================================================================
 # 3. Retraction: G148 / G248 / G348
@@ -932,12 +936,7 @@ retraction("ret_g248_g40_g143_left", 17,
            spec="6.1 (G143 on retraction)", readings=["K2", "D3", "H1"],
            checks="G248 G340 G143 G40 G17: explicit end point allowed",
            trc=40, kind=2, g34=340, side=143, disr=10, discl=2, fad=120, f_sar=800,
-           start=(-10, 0, 0), sel=(-10, 0), p4=(30, 0, 0), p0=(50, 40, 15))
-# this case has no selection block: drop the 'sel' line (the contour starts at the G0 point)
-_c = CASES[-1]
-CASES[-1] = (_c[0], _c[1], _c[2], [b for b in _c[3] if not b.startswith("@sel")]
-             [:4] + ["@c1 G1 X30 F400"] + [b for b in _c[3] if not b.startswith(("@sel", "@c1"))][4:],
-             [r for r in _c[4] if r[0] != "sel"], *_c[5:])
+           start=(-10, 0, 0), p4=(30, 0, 0), p0=(50, 40, 15))
 
 retraction("ret_g348_g341_g17_g42_g141", 17,
            title="G348 in the plane (G341), G42 with G141 (retract to the left: outside, r = DISR - "
@@ -960,13 +959,8 @@ retraction("ret_g248_g19_g40_g140_fallback", 19,
                  "of the end tangent -> G2; G341 without FAD and F: old F everywhere.",
            spec="6.1 (G140 with G40)", readings=["K2", "D3"],
            checks="G248 G341 G140->G143 G40 G19",
-           trc=40, kind=2, g34=341, side=140, disr=6, discl=1, prev_f=300,
-           start=(-10, 0, 0), sel=(-10, 0), p4=(30, 0, 0), p0=(50, -30, 20))
-_c = CASES[-1]
-CASES[-1] = (_c[0], _c[1], _c[2] + ["The program does not write G140 (initial setting)."],
-             [b for b in _c[3] if not b.startswith("@sel")][:4] + ["@c1 G1 Y30 F300"]
-             + [b.replace(" G140", "") for b in _c[3] if not b.startswith(("@sel", "@c1"))][4:],
-             [r for r in _c[4] if r[0] != "sel"], *_c[5:])
+           trc=40, kind=2, g34=341, side=140, write_side=False, disr=6, discl=1, prev_f=300,
+           start=(-10, 0, 0), p4=(30, 0, 0), p0=(50, -30, 20))
 
 # ==========================================================================================
 # 4. Alarms
