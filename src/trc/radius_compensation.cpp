@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "geom/disc_curve.hpp"
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::trc {
@@ -16,6 +17,8 @@ namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 constexpr double kEps = 1e-9;
+// How far the straight chords of a DISC transition curve may deviate from the curve (mm).
+constexpr double kDiscTolerance = 1e-3;
 
 [[noreturn]] void notModelled(const std::string& what) {
   raise(alarm_no::kNotModelled,
@@ -205,7 +208,7 @@ RadiusCompensation::Piece RadiusCompensation::compensateNext(const MotionBlock& 
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) {
-  if (p.transition) emit(*p.transition);
+  for (const MotionBlock& t : p.transition) emit(t);
   emit(toBlock(p.block, p.compensated));
   for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
 }
@@ -343,7 +346,7 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
       MotionBlock lb = toBlock(next.block, line);
       PlaneAxes pa = planeAxes(lb.plane);
       lb.end[pa.applicate] = lb.start[pa.applicate];
-      next.transition = lb;
+      next.transition.assign(1, lb);
     }
     return;
   }
@@ -393,8 +396,6 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   const TrcSettings& t = next.block.trc;
   bool circle = t.corner == CornerMode::TransitionCircle ? !(angle < t.curve_insert_limit)
                                                          : angle >= t.corner_limit;
-  if (circle && t.corner == CornerMode::TransitionCircle && t.disc > 0)
-    notModelled(fmt::format("DISC={} (transition curve other than a circle)", t.disc));
   if (!circle) {
     std::optional<geom::Crossing> best;
     for (const auto& x : geom::intersect(e1, e2))
@@ -406,19 +407,50 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
       return;
     }
   }
-  // Transition circle of the tool radius about the corner point; it belongs to the next block.
+  // Transition circle of the tool radius about the corner point (or the DISC curve); it
+  // belongs to the next block.
+  const double app = next.block.start[planeAxes(next.block.plane).applicate];
+  next.transition.clear();
+  transition(next.transition, next.block, a, t1, b, t2, p, s, t.corner == CornerMode::TransitionCircle ? t.disc : 0, app, app);
+}
+
+void RadiusCompensation::transition(std::vector<MotionBlock>& out, const MotionBlock& like, Vec2 a,
+                                    Vec2 ta, Vec2 b, Vec2 tb, Vec2 p, double s, double disc,
+                                    double app0, double app1) const {
+  PlaneAxes pa = planeAxes(like.plane);
+  if (disc > 0) {
+    if (auto curve = geom::discCurve(a, ta, b, tb, p, disc)) {
+      // DISC: the curve as straight chords within kDiscTolerance (the applicate, if it moves,
+      // is spread over them).
+      const std::vector<Vec2> pts = geom::chords(*curve, kDiscTolerance);
+      Vec2 from = a;
+      for (size_t i = 0; i < pts.size(); ++i) {
+        Element chord;
+        chord.p0 = from;
+        chord.p1 = pts[i];
+        MotionBlock cb = toBlock(like, chord);
+        cb.motion = like.motion == Motion::G0 ? Motion::G0 : Motion::G1;
+        const double f0 = static_cast<double>(i) / pts.size(), f1 = static_cast<double>(i + 1) / pts.size();
+        cb.start[pa.applicate] = app0 + f0 * (app1 - app0);
+        cb.end[pa.applicate] = app0 + f1 * (app1 - app0);
+        out.push_back(cb);
+        from = pts[i];
+      }
+      return;
+    }
+  }
   Element arc;
   arc.arc = true;
   arc.p0 = a;
   arc.p1 = b;
   arc.c = p;
   arc.ccw = s < 0;  // around the outside: clockwise for G41, counter-clockwise for G42
-  MotionBlock tb = toBlock(next.block, arc);
-  PlaneAxes pa = planeAxes(tb.plane);
-  tb.start[pa.applicate] = tb.end[pa.applicate] = next.block.start[pa.applicate];
-  tb.centre[pa.applicate] = tb.start[pa.applicate];
-  tb.turns = 0;
-  next.transition = tb;
+  MotionBlock tb_block = toBlock(like, arc);
+  tb_block.start[pa.applicate] = app0;
+  tb_block.end[pa.applicate] = app1;
+  tb_block.centre[pa.applicate] = app0;
+  tb_block.turns = 0;
+  out.push_back(tb_block);
 }
 
 void RadiusCompensation::bridge(Piece& next) {
@@ -478,7 +510,7 @@ void RadiusCompensation::bridge(Piece& next) {
   auto [j, at] = *found;
   window_[j].compensated.p1 = at;
   next.compensated.p0 = at;
-  next.transition.reset();
+  next.transition.clear();
   next.open_before = false;
   omitAfter(j, at, true);
 }
@@ -620,21 +652,14 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
       return;
     }
   }
-  if (settings_.corner == CornerMode::TransitionCircle && settings_.disc > 0)
-    notModelled(fmt::format("DISC={} (transition curve other than a circle)", settings_.disc));
   PlaneAxes pa = planeAxes(selection_.plane);
   approach.compensated.p1 = *t;
   approach.block.end[pa.applicate] = approach.block.start[pa.applicate];  // moves with the circle
-  Element arc;
-  arc.arc = true;
-  arc.p0 = *t;
-  arc.p1 = first.compensated.p0;
-  arc.c = p1;
-  arc.ccw = s < 0;
-  MotionBlock ab = toBlock(selection_, arc);
-  ab.start[pa.applicate] = approach.block.end[pa.applicate];
-  ab.centre[pa.applicate] = ab.start[pa.applicate];
-  first.transition = ab;
+  first.transition.clear();
+  transition(first.transition, selection_, *t, dir, first.compensated.p0,
+             first.programmed.startTangent(), p1, s,
+             settings_.corner == CornerMode::TransitionCircle ? settings_.disc : 0,
+             approach.block.end[pa.applicate], selection_.end[pa.applicate]);
 }
 
 // KONT retraction with the end point behind the contour (details Q2): from the normal point of
@@ -669,19 +694,12 @@ bool RadiusCompensation::kontRetraction(const MotionBlock& m) {
       return true;
     }
   }
-  if (m.trc.corner == CornerMode::TransitionCircle && m.trc.disc > 0)
-    notModelled(fmt::format("DISC={} (transition curve other than a circle)", m.trc.disc));
-  Element arc;
-  arc.arc = true;
-  arc.p0 = last.compensated.p1;
-  arc.p1 = *t;
-  arc.c = pe;
-  arc.ccw = s < 0;
-  MotionBlock ab = toBlock(m, arc);
-  ab.start[pa.applicate] = ab.end[pa.applicate] = m.start[pa.applicate];
-  ab.centre[pa.applicate] = ab.start[pa.applicate];
+  std::vector<MotionBlock> around;
+  transition(around, m, last.compensated.p1, last.programmed.endTangent(), *t, dir, pe, s,
+             m.trc.corner == CornerMode::TransitionCircle ? m.trc.disc : 0, m.start[pa.applicate],
+             m.start[pa.applicate]);
   flushAll();
-  emit(ab);
+  for (const MotionBlock& b : around) emit(b);
   emit(toBlock(m, line));
   state_ = State::Off;
   return true;

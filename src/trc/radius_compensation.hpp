@@ -50,7 +50,7 @@ class RadiusCompensation {
     bool approach = false;      // the selection block's approach line
     bool restart = false;       // the side changed in this block (G41 <-> G42, sign of R)
     int strategy = 460;         // approach line: G460/G461/G462
-    std::optional<place::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
+    std::vector<place::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
     std::vector<place::MotionBlock> waiting;       // blocks without plane motion after it
   };
 
@@ -69,6 +69,11 @@ class RadiusCompensation {
   Piece compensateNext(const place::MotionBlock& m);
   // Joins `next` to the last element of the window (corner).
   void connect(Piece& cur, Piece& next);
+  // The transition about corner point p from a (tangent ta) to b (tangent tb): the circle of
+  // radius R, or with DISC > 0 the DISC curve as chords; the applicate runs from app0 to app1.
+  void transition(std::vector<place::MotionBlock>& out, const place::MotionBlock& like,
+                  geom::Vec2 a, geom::Vec2 ta, geom::Vec2 b, geom::Vec2 tb, geom::Vec2 p,
+                  double s, double disc, double app0, double app1) const;
   // Bottleneck detection: intersects `next` with earlier elements of the window.
   void bridge(Piece& next);
   // Omits the window's elements after position `keep` (but the last one if `keep_last`); `at`

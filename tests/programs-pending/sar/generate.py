@@ -166,6 +166,19 @@ def same(p, q):
     return abs(p[0] - q[0]) < EPS and abs(p[1] - q[1]) < EPS
 
 
+def sweep(m, a, b, sigma):
+    """angle swept from a to b about m in the sense sigma (+1 CCW, -1 CW), in degrees 0..360"""
+    aa = math.atan2(a[1] - m[1], a[0] - m[0])
+    bb = math.atan2(b[1] - m[1], b[0] - m[0])
+    d = math.degrees((bb - aa) * sigma) % 360.0
+    return d
+
+
+def arc_tangent(m, p, sigma):
+    rv = unit(vsub(p, m))
+    return nl(rv) if sigma > 0 else rot_m90(rv)
+
+
 def tool(r):
     return ["$TC_DP1[1,1]=120", f"$TC_DP6[1,1]={num(r)}", "T1 D1"]
 
@@ -301,11 +314,14 @@ def approach(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kind=
         motion = "G3" if sigma > 0 else "G2"
         rv = unit(vsub(p3p, M))
         t3 = nl(rv) if sigma > 0 else rot_m90(rv)
+        # independent checks: the arc ends in P4 tangent to t after 90 / 180 degrees
+        assert same(arc_tangent(M, p4p, sigma), t)
+        assert abs(sweep(M, p3p, p4p, sigma) - (90 if kind == 2 else 180)) < 1e-7
     # --- applicates
     app4 = p4[2]
     a2 = app_target(app4, discl, "DISCL")
     if a2 is None:
-        app2, txt2 = app4, "DISCL not programmed -> read as DISCL=0 (reading G2)"
+        app2, txt2 = app4, "DISCL not programmed -> read as DISCL=0 (reading Z2)"
     else:
         app2, txt2 = a2
     a1 = app_target(app4, disrp, "DISRP")
@@ -477,8 +493,11 @@ def retraction(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kin
         motion = "G3" if sigma > 0 else "G2"
         rv = unit(vsub(p3p, M))
         t3 = nl(rv) if sigma > 0 else rot_m90(rv)
+        # independent checks: the arc leaves P4 along t and sweeps 90 / 180 degrees
+        assert same(arc_tangent(M, p4p, sigma), t)
+        assert abs(sweep(M, p4p, p3p, sigma) - (90 if kind == 2 else 180)) < 1e-7
     a2 = app_target(app4, discl, "DISCL")
-    app2, txt2 = (app4, "no DISCL -> 0 (reading G2)") if a2 is None else a2
+    app2, txt2 = (app4, "no DISCL -> 0 (reading Z2)") if a2 is None else a2
     a1 = app_target(app4, disrp, "DISRP")
     app1, txt1 = (p0[2], f"no DISRP -> P1.app = P0.app = {f6(p0[2])}") if a1 is None else a1
     app3 = app2 if g34 == 340 else app4
@@ -778,23 +797,23 @@ approach("app_discl0_p0_in_plane", 17,
 approach("app_discl0_g340_p0_above", 17,
          title="DISCL=0 with G340, P0 above the plane: convention (P0->P1 parallel, P1->P3 fast "
                "infeed to the plane of P4, then the line). FLAG: PM-F 11/2006 p372 says 'only two "
-               "blocks (P1, P2 and P3 combined)' - see README reading G1.",
-         spec="6.1 (DISCL=0)", readings=["V1", "V2", "G1"],
+               "blocks (P1, P2 and P3 combined)' - see README reading Z1.",
+         spec="6.1 (DISCL=0)", readings=["V1", "V2", "Z1"],
          checks="DISCL=0 G340 with P0 above: convention rows (flagged)",
          trc=40, kind=1, g34=340, disr=10, discl=0, fad=50, f_sar=200,
          p0=(20, -30, 10), p4=(0, 0, -5), cont_end=(0, 40))
 
 approach("app_discl_missing_g340", 18,
-         title="no DISCL with G340 (G41 G247 G140): read as DISCL=0 (reading G2, flagged).",
-         spec="6.1 (DISCL)", readings=["V1", "V2", "G2"],
+         title="no DISCL with G340 (G41 G247 G140): read as DISCL=0 (reading Z2, flagged).",
+         spec="6.1 (DISCL)", readings=["V1", "V2", "Z2"],
          checks="DISCL not programmed = 0: circle in the plane, not a helix",
          trc=41, kind=2, g34=340, side=140, disr=6, fad=70, f_sar=290,
          p0=(30, -30, 20), p4=(0, 0, 0), cont_end=(-30, 0))
 
 approach("app_discl0_g341", 19,
          title="DISCL=0 with G341: P2 = P3, the FAD infeed has zero length (no row), the whole "
-               "infeed runs at the fast velocity (reading G3).",
-         spec="6.1 (DISCL=0)", readings=["V1", "V3", "G3"],
+               "infeed runs at the fast velocity (reading Z3).",
+         spec="6.1 (DISCL=0)", readings=["V1", "V3", "Z3"],
          checks="DISCL=0 G341 G147 G42 G19: no FAD row",
          trc=42, kind=1, g34=341, disr=2, discl=0, fad=40, f_sar=180,
          p0=(-20, 30, 15), p4=(5, 5, 0), cont_end=(5, -30))
@@ -1001,7 +1020,7 @@ alarm("alarm_g147_disr_minus_r", 17,
       tool(5) + ["@p0 G17 G90 G0 X0 Y0 Z20 F500",
                  "@sar G41 G147 G340 DISR=-5 DISCL=2 X40 Y-10 Z0 F300", "G1 X60", "M30"],
       [("p0", "G0", (0, 0, 20), None, None)], "sar", 10742,
-      "G147 |DISR| >= R", "6.1, 6.7", ["E1", "E2"])
+      "G147 with abs(DISR) >= R", "6.1, 6.7", ["E1", "E2"])
 
 alarm("alarm_g147_g40_negative_disr", 17,
       ["G147 without TRC and DISR=-2: R counts 0 without TRC (and is only added when positive),",
