@@ -8,6 +8,7 @@
 
 #include "ncoffset/channel.hpp"
 #include "out/html_report.hpp"
+#include "out/mpf_writer.hpp"
 #include "out/svg_writer.hpp"
 #include "out/writers.hpp"
 
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
   app.add_option("--init", inits, "init file run before PROGRAM (repeatable, in order)");
   app.add_option("-o,--output", output, "output file (default: stdout)");
   app.add_option("--format", format,
-                 "csv | jsonl | svg | html (default: from the output's extension, else csv)")
+                 "csv | jsonl | svg | html | mpf (default: from the output's extension, else csv)")
       ->check(CLI::IsMember({"csv", "jsonl", "svg", "html", "mpf"}));
   app.add_option("--coords", coords, "mcs (carrier reference point, default) | wcs (tool tip)")
       ->check(CLI::IsMember({"mcs", "wcs"}));
@@ -90,11 +91,6 @@ int main(int argc, char** argv) {
   }
   options.coords = coords == "wcs" ? ncoffset::CoordSystem::WCS : ncoffset::CoordSystem::MCS;
   if (format.empty()) format = output.empty() ? "csv" : extensionFormat(output);
-  if (format != "csv" && format != "jsonl" && format != "svg" && format != "html") {
-    std::fprintf(stderr, "ncoffset: --format %s is not available in this version (csv, jsonl, svg, html)\n",
-                 format.c_str());
-    return 1;
-  }
   std::FILE* out = stdout;
   if (!output.empty()) {
     out = std::fopen(output.c_str(), "wb");
@@ -113,6 +109,9 @@ int main(int argc, char** argv) {
   else if (format == "html")
     writer = std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(view),
                                                          program, coords);
+  else if (format == "mpf")
+    writer = std::make_unique<ncoffset::out::MpfWriter>(
+        out, coords, [&channel](int i) -> const std::string& { return channel.fileName(i); });
   else
     writer = std::make_unique<ncoffset::out::CsvWriter>(out);
   MessagePrinter sink(*writer);
