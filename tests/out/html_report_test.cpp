@@ -106,7 +106,7 @@ TEST(HtmlReport, AlarmIsNamedAndMarked) {
 
 TEST(HtmlReport, TableStopsAfterTheFirstThousandSegments) {
   const int n = HtmlReport::kMaxRows + 234;
-  std::string html = report([n](HtmlReport& r) {
+  std::string html = report([&](HtmlReport& r) {
     for (int i = 0; i < n; ++i)
       r.segment(lineSeg(i + 1, Motion::G1, {double(i), 0, 0}, {double(i + 1), 0, 0}, 10));
   });
