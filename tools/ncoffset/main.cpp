@@ -7,6 +7,9 @@
 #include <memory>
 
 #include "ncoffset/channel.hpp"
+#include "out/html_report.hpp"
+#include "out/mpf_writer.hpp"
+#include "out/svg_writer.hpp"
 #include "out/writers.hpp"
 
 namespace {
@@ -46,15 +49,19 @@ std::string extensionFormat(const std::string& path) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ncoffset: SINUMERIK 840D sl tool offsets (W1) outside the control"};
-  std::string program, output, format, coords = "mcs", vars;
+  std::string program, output, format, coords = "mcs", view = "xy", vars;
   std::vector<std::string> inits;
   ncoffset::RunOptions options;
   app.add_option("PROGRAM", program, "part program (.MPF)")->required();
   app.add_option("--init", inits, "init file run before PROGRAM (repeatable, in order)");
   app.add_option("-o,--output", output, "output file (default: stdout)");
-  app.add_option("--format", format, "csv | jsonl (default: from the output's extension, else csv)");
+  app.add_option("--format", format,
+                 "csv | jsonl | svg | html | mpf (default: from the output's extension, else csv)")
+      ->check(CLI::IsMember({"csv", "jsonl", "svg", "html", "mpf"}));
   app.add_option("--coords", coords, "mcs (carrier reference point, default) | wcs (tool tip)")
       ->check(CLI::IsMember({"mcs", "wcs"}));
+  app.add_option("--view", view, "svg: plane drawn: xy (G17, default) | zx (G18) | yz (G19)")
+      ->check(CLI::IsMember({"xy", "zx", "yz"}));
   app.add_option("--vars", vars, "write R parameters and user variables as JSON");
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
@@ -84,11 +91,6 @@ int main(int argc, char** argv) {
   }
   options.coords = coords == "wcs" ? ncoffset::CoordSystem::WCS : ncoffset::CoordSystem::MCS;
   if (format.empty()) format = output.empty() ? "csv" : extensionFormat(output);
-  if (format != "csv" && format != "jsonl") {
-    std::fprintf(stderr, "ncoffset: --format %s is not available in this version (csv, jsonl)\n",
-                 format.c_str());
-    return 1;
-  }
   std::FILE* out = stdout;
   if (!output.empty()) {
     out = std::fopen(output.c_str(), "wb");
@@ -102,6 +104,14 @@ int main(int argc, char** argv) {
   if (format == "jsonl")
     writer = std::make_unique<ncoffset::out::JsonLinesWriter>(
         out, [&channel](int i) -> const std::string& { return channel.fileName(i); });
+  else if (format == "svg")
+    writer = std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(view));
+  else if (format == "html")
+    writer = std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(view),
+                                                         program, coords);
+  else if (format == "mpf")
+    writer = std::make_unique<ncoffset::out::MpfWriter>(
+        out, coords, [&channel](int i) -> const std::string& { return channel.fileName(i); });
   else
     writer = std::make_unique<ncoffset::out::CsvWriter>(out);
   MessagePrinter sink(*writer);

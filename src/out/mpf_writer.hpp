@@ -1,0 +1,43 @@
+// The compensated path as a SINUMERIK part program (PM-NC: G0/G1 linear, G2/G3 with the
+// absolute centre I=AC(..) J=AC(..) K=AC(..), TURN= for helices; G17/G18/G19 working plane):
+// run through ncoffset again, it gives the same path without frames, tools or compensation.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "ncoffset/path.hpp"
+#include "out/writers.hpp"
+
+namespace ncoffset::out {
+
+class MpfWriter final : public PathSink {
+ public:
+  // coords: "mcs" or "wcs", named in the header comment. names: file names for a comment
+  // where the source file of the blocks changes (may be empty: line numbers only).
+  MpfWriter(std::FILE* f, const std::string& coords, FileNames names = {});
+  void segment(const Segment& s) override;
+  void message(const SourceLoc& where, const std::string& text) override;
+  void warning(const SourceLoc& where, int number, const std::string& text) override;
+  // `; ALARM N at FILE:LINE: TEXT` and M0, or M30. Later calls do nothing.
+  void finish(const Alarm* alarm) override;
+
+ private:
+  void block(const Segment& s, Motion motion, Vec3 end);
+  void feed(const Segment& s);
+  void source(const Segment& s);
+
+  BufferedWriter w_;
+  FileNames names_;
+  long long n_ = 0;    // block number of the last block
+  int file_ = -1;      // source file of the last block
+  int plane_ = -1;     // applicate axis of the last plane written (2: G17, 1: G18, 0: G19)
+  bool has_feed_ = false;
+  double feed_ = 0;    // the last F written
+  bool finished_ = false;
+};
+
+// `v` with at most 6 decimals and no trailing zeros ("-0" as "0").
+void appendNcNumber(fmt::memory_buffer& b, double v);
+
+}  // namespace ncoffset::out

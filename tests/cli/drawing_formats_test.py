@@ -1,0 +1,88 @@
+#!/usr/bin/env python3
+"""The drawing and program formats from the command line: `-o x.svg` / `.html` / `.MPF` choose
+the format, --view picks the plane, the SVG parses as XML with a viewBox around the path, the
+HTML page is one self-contained document, and a run that ends in an alarm still writes a whole
+drawing with the alarm marked (exit 2). usage: drawing_formats_test.py NCOFFSET EXAMPLES_DIR"""
+import os, subprocess, sys, tempfile
+import xml.etree.ElementTree as ET
+
+binary = os.path.abspath(sys.argv[1])
+examples = os.path.abspath(sys.argv[2])
+d = tempfile.mkdtemp(prefix="ncoffset-draw-")
+fails = []
+NS = "{http://www.w3.org/2000/svg}"
+
+def check(name, cond, detail=""):
+    print(("ok   " if cond else "FAIL ") + name + ("" if cond else f"  [{detail}]"))
+    if not cond:
+        fails.append(name)
+
+def run(*args):
+    return subprocess.run([binary, *args], capture_output=True, text=True, cwd=d, timeout=60)
+
+def svg_root(path):
+    try:
+        return ET.parse(path).getroot()
+    except (ET.ParseError, OSError) as e:
+        return str(e)
+
+frames = os.path.join(examples, "frames.MPF")
+# The golden check: an example to SVG by extension.
+out = os.path.join(d, "x.svg")
+p = run(frames, "-o", out)
+check("svg: exit 0", p.returncode == 0, p.stderr)
+root = svg_root(out)
+check("svg: parses as XML, root <svg>", not isinstance(root, str) and root.tag == NS + "svg", root)
+if not isinstance(root, str):
+    vb = [float(v) for v in root.get("viewBox", "0 0 0 0").split()]
+    check("svg: viewBox has an area", vb[2] > 0 and vb[3] > 0, vb)
+    paths = root.findall(f".//{NS}path")
+    check("svg: path elements, all non-scaling strokes", len(paths) > 3 and all(
+        p.get("vector-effect") == "non-scaling-stroke" for p in paths), len(paths))
+    check("svg: programmed and compensated path", root.find(f".//{NS}g[@id='programmed']/{NS}path")
+          is not None and root.find(f".//{NS}g[@id='path']/{NS}path") is not None)
+    check("svg: an SVG arc for the G17 arcs", any("A" in p.get("d", "") for p in paths))
+
+for view, label in (("zx", "view ZX (G18)"), ("yz", "view YZ (G19)")):
+    out = os.path.join(d, f"{view}.svg")
+    p = run("--view", view, "-o", out, frames)
+    check(f"--view {view}: exit 0 and labelled", p.returncode == 0 and label in open(out).read(),
+          p.stderr)
+p = run("--view", "xz", "-o", os.path.join(d, "bad.svg"), frames)
+check("--view xz rejected with exit 1", p.returncode == 1, p.returncode)
+p = run("--format", "svg", frames)
+check("--format svg to stdout", p.returncode == 0 and p.stdout.rstrip().endswith("</svg>"), p.stdout[-60:])
+
+out = os.path.join(d, "r.html")
+p = run("--init", os.path.join(examples, "frames.INI"), "-o", out, frames)
+html = open(out).read() if os.path.exists(out) else ""
+check("html: exit 0", p.returncode == 0, p.stderr)
+check("html: one document with one inline SVG", html.startswith("<!DOCTYPE html>")
+      and html.rstrip().endswith("</html>") and html.count("<svg ") == 1, html[:80])
+check("html: self-contained", not any(s in html for s in ("<script", "<link", "src=", "href=")))
+check("html: summary and table", "<h2>Summary</h2>" in html and "<table class=\"segments\">" in html)
+
+out = os.path.join(d, "c.MPF")
+p = run("-o", out, frames)
+text = open(out).read() if os.path.exists(out) else ""
+check("mpf: chosen by the .MPF extension", p.returncode == 0 and
+      text.startswith("; ncoffset compensated path (coords mcs)"), text[:80])
+
+# An alarm: the drawing is whole, the alarm marked where the path stopped.
+prog = os.path.join(d, "A.MPF")
+with open(prog, "w") as f:
+    f.write("G17 G90 G1 X10 Y5 Z0 F100\nG2 X20 Y0 I3 J0\nM30\n")
+out = os.path.join(d, "a.svg")
+p = run("-o", out, prog)
+check("alarm: exit 2", p.returncode == 2, p.returncode)
+root = svg_root(out)
+check("alarm: the SVG parses", not isinstance(root, str), root)
+if not isinstance(root, str):
+    mark = root.find(f".//{NS}g[@id='alarm']/{NS}circle")
+    check("alarm: marked at the last end point", mark is not None and mark.get("cx") == "10"
+          and mark.get("cy") == "-5", None if mark is None else mark.attrib)
+    title = mark.find(f"{NS}title").text if mark is not None else ""
+    check("alarm: title names it", title.startswith("alarm 14040 at ") and "A.MPF:2:" in title, title)
+
+print("all format checks hold" if not fails else f"{len(fails)} format checks fail")
+sys.exit(1 if fails else 0)
