@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> inits;
   ncoffset::RunOptions options;
   app.add_option("PROGRAM", program, "part program (.MPF)")->required();
-  app.add_option("--init", inits, "init file run before PROGRAM (repeatable, in order)");
+  app.add_option("--init", inits, "init file run before PROGRAM (repeatable, in order)")
+      ->allow_extra_args(false);  // one file per --init, so `--init A PROGRAM` works
   app.add_option("-o,--output", output, "output file (default: stdout)");
   app.add_option("--format", format,
                  "csv | jsonl | svg | html | mpf (default: from the output's extension, else csv)")
