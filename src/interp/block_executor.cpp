@@ -167,8 +167,28 @@ void Interpreter::collectWord(const Stmt& st) {
     return;
   }
   if (name == "OFFN") { modal_.offn = toMm(value()); return; }
-  if (isOneOf(name, {"DISR", "DISCL", "DISRP", "FAD"}))
-    notModelled(name, "smooth approach and retraction (SAR) is not modelled yet");
+  if (name == "DISR") { words_.disr = toMm(value()); return; }
+  if (name == "DISCL" || name == "DISRP") {
+    if (st.mode == AxisMode::IC)
+      raise(alarm_no::kSyntaxError, fmt::format("{}=IC(..) is not allowed (incremental is the default)", name));
+    (name == "DISCL" ? words_.discl : words_.disrp) = toMm(value());
+    (name == "DISCL" ? words_.discl_ac : words_.disrp_ac) = st.mode == AxisMode::AC;
+    return;
+  }
+  if (name == "FAD") {
+    // FAD=PM(..) linear feed, FAD=PR(..) revolutional feed (PM-NC p272): the value is the feed
+    // of the slow infeed either way (the CSV carries no feed type).
+    if (!st.literal) {
+      const lang::Node& v = block_.node(st.expr);
+      if (v.kind == lang::NodeKind::Call && (v.text == "PM" || v.text == "PR")) {
+        if (v.b != 1) raise(alarm_no::kSyntaxError, "PM/PR take one value");
+        words_.fad = eval_.number(block_, block_.arg(v, 0));
+        return;
+      }
+    }
+    words_.fad = value();
+    return;
+  }
   if (name == "SPOS" || name == "SPOSA") { value(); return; }  // spindle positioning
   notModelled(fmt::format("address {}=", name), "this address changes the path and is not modelled");
 }
@@ -214,7 +234,9 @@ void Interpreter::gCode(int g) {
     case 451: modal_.corner = CornerMode::Intersection; return;
     case 460: case 461: case 462: modal_.trc_strategy = g; return;
     case 147: case 148: case 247: case 248: case 347: case 348:
-      notModelled(fmt::format("G{}", g), "smooth approach and retraction (SAR) is not modelled yet");
+      if (words_.sar) raise(10743, "SAR programmed several times in one block");
+      words_.sar = g;
+      return;
     case 33: case 34: case 35: case 331: case 332:
       notModelled(fmt::format("G{}", g), "thread cutting / tapping interpolation");
     case 74: case 75: notModelled(fmt::format("G{}", g), "reference point / fixed point approach");
@@ -247,6 +269,7 @@ void Interpreter::namedWord(const Stmt& st) {
     words_.frame_command = w;
     return;
   }
+  if (w == "STOPRE") sar_.preprocessorStop();
   if (w == "STOPRE" && trc_.active())
     notModelled("STOPRE", "a preprocessing stop while tool radius compensation is active (SD42480)");
   if (isOneOf(w, {"STOPRE", "BRISK", "SOFT", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN",
@@ -292,6 +315,7 @@ void Interpreter::finishBlock() {
   if (words_.rpl && words_.frame_command.empty())
     raise(alarm_no::kSyntaxError, "RPL= only with ROT or AROT");
 
+  feed_before_ = modal_.feed;
   if (words_.f && !words_.dwell)
     modal_.feed = modal_.units == Units::G700 ? *words_.f * 25.4 : *words_.f;
   bool any_axis = words_.axis[0] || words_.axis[1] || words_.axis[2];
@@ -303,19 +327,21 @@ void Interpreter::finishBlock() {
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   block_moved_ = false;
-  if (!axes_consumed && (any_axis || (is_arc && circle_words))) doMotion();
+  if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar)) doMotion();
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
   // compensated elements counts against MD20250.
-  if (!block_moved_ && trc_.active() && !block_.stmts.empty() &&
+  if (!block_moved_ && sar_.active() && !block_.stmts.empty() &&
       block_.stmts.front().kind == lang::StmtKind::Word)
-    trc_.blockWithoutMotion();
+    sar_.blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
     if (levels_.size() > 1) returnFromSubprogram();  // M2/M30 in a subprogram act like M17
     else endProgram();
     if (!words_.call.empty()) raise(alarm_no::kSyntaxError, "program call and program end in one block");
+    motion_before_ = modal_.motion;
     return;
   }
+  motion_before_ = modal_.motion;
   if (!words_.call.empty()) {
     callSubprogram(words_.call, words_.repeat.value_or(1));
   } else if (words_.repeat) {
@@ -341,6 +367,8 @@ void Interpreter::doMotion() {
   }
   place::MotionBlock m;
   m.motion = modal_.motion;
+  // A SAR block is a linear block: its own G0/G1 (G2/G3 modal count as G1) moves P2 -> P0.
+  if (words_.sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
   m.frame = frame;
   m.line = line_;
   m.file = file_;
@@ -407,7 +435,8 @@ void Interpreter::doMotion() {
         if (words_.axis[i] && std::fabs(frame.linear.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
           applied_offset_[k] = full[k];
     Vec3 moved = (frame.apply(target) + applied_offset_) - (bcs_ + before);
-    if (std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12) {
+    if (std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12 &&
+        !words_.sar) {
       wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
       return;  // zero-length block: no segment
     }
@@ -436,7 +465,34 @@ void Interpreter::doMotion() {
         raise(alarm_no::kValueRange,
               fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i], "XYZ"[i]));
   block_moved_ = true;
-  trc_.motion(m);
+  if (words_.sar) {
+    SarRequest& q = m.sar;
+    q.type = words_.sar;
+    q.side = modal_.sar_side;
+    q.space = modal_.sar_plane;
+    q.has_disr = words_.disr.has_value();
+    q.disr = words_.disr.value_or(0);
+    q.has_discl = words_.discl.has_value();
+    q.discl = words_.discl.value_or(0);
+    q.discl_ac = words_.discl_ac;
+    q.has_disrp = words_.disrp.has_value();
+    q.disrp = words_.disrp.value_or(0);
+    q.disrp_ac = words_.disrp_ac;
+    q.has_fad = words_.fad.has_value();
+    q.fad = words_.fad.value_or(0);
+    PlaneAxes pa = planeAxes(modal_.plane);
+    q.plane_axis = words_.axis[pa.abscissa] || words_.axis[pa.ordinate];
+    q.any_axis = q.plane_axis || words_.axis[pa.applicate];
+    q.f_programmed = words_.f.has_value();
+    q.feed_value = modal_.feed;
+    q.feed_before = feed_before_;
+    q.motion_before = motion_before_ == Motion::G0 ? 0 : 1;
+    sar_.setMaxDummyBlocks(static_cast<int>(data_.get(md_sar_dummy_blocks_)));
+  } else if (words_.disr || words_.discl || words_.disrp || words_.fad) {
+    raise(alarm_no::kSyntaxError, "DISR, DISCL, DISRP and FAD only in a SAR block (G147..G348)");
+  }
+  sar_.motion(m);
+  if (auto end = sar_.takeEndOverride()) target = *end;  // implicit retraction end point
   bcs_ = frame.apply(target);
   wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
 }

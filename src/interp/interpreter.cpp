@@ -22,6 +22,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
     : options_(options),
       placement_(sink, options.coords),
       trc_(placement_),
+      sar_(trc_),
       sink_(sink),
       eval_(*this),
       uifr_(100) {
@@ -33,6 +34,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
   md_insert_limit_ = data_.find("$MC_CUTCOM_CURVE_INSERT_LIMIT");
   md_dummy_blocks_ = data_.find("$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS");
   md_check_blocks_ = data_.find("$MC_CUTCOM_MAXNUM_CHECK_BLOCKS");
+  md_sar_dummy_blocks_ = data_.find("$MC_WAB_MAXNUM_DUMMY_BLOCKS");
   md_change_mode_ = data_.find("$MC_TOOL_CHANGE_MODE");
   md_change_m_ = data_.find("$MC_TOOL_CHANGE_M_CODE");
   md_default_edge_ = data_.find("$MC_CUTTING_EDGE_DEFAULT");
@@ -109,7 +111,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     }
   }
   if (!init_file) {
-    trc_.finish();  // the last compensated element ends on its normal
+    sar_.finish();  // the last compensated element ends on its normal
     main_vars_ = std::move(levels_.front().locals);
   }
   levels_.clear();
@@ -681,6 +683,11 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
                      "\"$P_TOOLO\": [{},{},{}], \"$TOOL_LENGTH_BCS\": [{},{},{}]",
                      active_tool_, active_edge_, l.total[0], l.total[1], l.total[2], l.radius,
                      o.x + 0.0, o.y + 0.0, o.z + 0.0, len.x + 0.0, len.y + 0.0, len.z + 0.0);
+  // Smooth approach: P3 and P4 of the last evaluated approach (WCS), $P_APDV.
+  const Vec3 apr = sar_.apr(), aep = sar_.aep();
+  out << fmt::format(", \"$P_APR\": [{},{},{}], \"$P_AEP\": [{},{},{}], \"$P_APDV\": {}",
+                     apr.x + 0.0, apr.y + 0.0, apr.z + 0.0, aep.x + 0.0, aep.y + 0.0, aep.z + 0.0,
+                     sar_.apdv() ? 1 : 0);
   std::map<std::string, const UserVariable*> sorted;
   for (const auto& [k, v] : globals_) sorted[k] = &v;
   const VariableMap& main = levels_.empty() ? main_vars_ : levels_.front().locals;

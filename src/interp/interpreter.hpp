@@ -23,6 +23,7 @@
 #include "place/placement.hpp"
 #include "tool/tool_store.hpp"
 #include "trc/radius_compensation.hpp"
+#include "trc/smooth_approach.hpp"
 
 namespace ncoffset::interp {
 
@@ -119,6 +120,9 @@ class Interpreter final : public lang::Environment {
   RunOptions options_;
   place::Placement placement_;
   trc::RadiusCompensation trc_;
+  trc::SmoothApproach sar_;
+  double feed_before_ = 0;                 // the modal feed before the current block
+  Motion motion_before_ = Motion::G0;      // the modal G0..G3 before the current block
   PathSink& sink_;
   lang::Evaluator eval_;
   MachineData data_;
@@ -159,6 +163,7 @@ class Interpreter final : public lang::Environment {
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
   int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0, md_check_blocks_ = 0;
+  int md_sar_dummy_blocks_ = 0;
   bool block_moved_ = false;  // the executing block handed a motion on
 
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection

@@ -65,6 +65,9 @@ struct BlockWords {
   bool tool_change = false;   // M6 (MD22560) for the master spindle
   std::string_view call;      // subprogram to call at block end (block text or call_name_)
   std::optional<long long> repeat;  // P
+  int sar = 0;                // G147..G348 (smooth approach / retraction) in this block
+  std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
+  bool discl_ac = false, disrp_ac = false;
   int column = 0;
 
   void clear() { *this = BlockWords(); }

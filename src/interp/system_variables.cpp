@@ -84,6 +84,16 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   }
   if (name.empty() || name[0] != '$') return false;
   if (readTool(name, idx, indexed, out)) return true;
+  if (name == "$P_APR" || name == "$P_AEP") {
+    // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
+    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+    out = Value::real((name == "$P_APR" ? sar_.apr() : sar_.aep())[axisOf(idx[0])]);
+    return true;
+  }
+  if (name == "$P_APDV") {
+    out = Value::integer(sar_.apdv() ? 1 : 0);
+    return true;
+  }
   if (name == "$P_UIFRNUM") {
     int f = modal_.frame_select;
     out = Value::integer(f == 500 ? 0 : f < 100 ? f - 53 : f - 500);

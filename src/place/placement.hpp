@@ -29,6 +29,7 @@ struct MotionBlock {
   bool has_feed = false;
   int line = 0;
   int file = 0;
+  SarRequest sar;     // smooth approach / retraction (type 0: none)
 };
 
 class Placement {

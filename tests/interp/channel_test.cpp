@@ -238,7 +238,7 @@ TEST(Channel, VariablesJson) {
   ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
   EXPECT_EQ(r.vars,
             "{\"R\": {\"1\": 3, \"7\": 0.3333333333333333}, "
-            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, \"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], " "\"A\": 0.1, \"F\": true, "
+            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, \"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], \"$P_AEP\": [0,0,0], \"$P_APDV\": 0, " "\"A\": 0.1, \"F\": true, "
             "\"K\": [1,2,3], \"S\": \"a\\\\b\"}\n");
 }
 
@@ -246,7 +246,7 @@ TEST(Channel, VariablesJsonTwoDimensionsAndNoR) {
   Outcome r = run("DEF REAL M[2,2]=SET(1,2,3,4.5)\n");
   ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
   EXPECT_EQ(r.vars, "{\"R\": {}, "
-            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, \"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], " "\"M\": [[1,2],[3,4.5]]}\n");
+            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, \"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], \"$P_AEP\": [0,0,0], \"$P_APDV\": 0, " "\"M\": [[1,2],[3,4.5]]}\n");
 }
 
 TEST(Channel, FileNameOfMainProgram) {

@@ -10,7 +10,7 @@ arithmetic of those formulas, the line numbering and the mapping of plane coordi
 (a, o, applicate) onto X, Y, Z. The formulas are the ones of README.md ('Construction'); the
 manual examples S-1 and S-2 are written out with literal numbers.
 
-Run: python3 tests/programs-pending/sar/generate.py   (deterministic)
+Run: python3 tests/programs/sar/generate.py   (deterministic)
 """
 import math
 import os
@@ -1058,11 +1058,11 @@ alarm("alarm_reversal_disrp", 18,
 alarm("alarm_reversal_retraction", 17,
       ["Retraction G148 with DISCL=10 but the end point P0 at Z5: 0 -> 10 -> 5 (up, then down) ->",
        "alarm 10741 on the retraction block.",
-       "Rows: G0 and the selection block (its end is fixed by X40); X40 itself is under TRC and its",
-       "end waits for its successor, the failing SAR block -> not written (E1). Status 2."],
+       "Rows: G0 only: the selection block and X40 are still in the TRC look-ahead window (MD20240",
+       "= 3 blocks, a later block could still change them; E1). Status 2."],
       tool(5) + ["@g0 G17 G90 G0 X-10 Y-10 Z0", "@sel G41 G1 X0 Y0 F400", "X40",
                  "@sar G40 G148 G340 DISR=5 DISCL=10 X70 Y20 Z5", "M30"],
-      [("g0", "G0", (-10, -10, 0), None, None), ("sel", "G1", (0, 5, 0), None, 400)], "sar", 10741,
+      [("g0", "G0", (-10, -10, 0), None, None)], "sar", 10741,
       "reversal on retraction; rows under TRC", "6.1, 6.7", ["E1", "E2"])
 
 alarm("alarm_g143_retraction_implicit", 17,
