@@ -9,5 +9,7 @@ mkdir -p out
 ./build/ncoffset --init examples/frames.INI -o out/frames.csv examples/frames.MPF
 ./build/ncoffset --init examples/tools.INI --vars out/lentoax.json -o out/lentoax.csv \
   examples/lentoax.MPF
-echo "wrote out/frames.csv and out/lentoax.csv:"
-cat out/frames.csv out/lentoax.csv
+./build/ncoffset --init examples/tools.INI -o out/pocket.csv examples/pocket.MPF
+./build/ncoffset --init examples/tools.INI -o out/pocket.html examples/pocket.MPF
+echo "wrote out/frames.csv, out/lentoax.csv, out/pocket.csv and the report out/pocket.html:"
+cat out/frames.csv out/lentoax.csv out/pocket.csv
