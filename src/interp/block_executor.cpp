@@ -167,11 +167,18 @@ void Interpreter::collectWord(const Stmt& st) {
     return;
   }
   if (name == "OFFN") { modal_.offn = toMm(value()); return; }
-  if (name == "DISR") { words_.disr = toMm(value()); return; }
+  // SAR distances: within the machine's number range like every position.
+  auto distance = [&]() {
+    double v = toMm(value());
+    if (!std::isfinite(v) || std::fabs(v) > 1e9)
+      raise(alarm_no::kValueRange, fmt::format("value range exceeded: {}={} (|value| <= 1e9 mm)", name, v));
+    return v;
+  };
+  if (name == "DISR") { words_.disr = distance(); return; }
   if (name == "DISCL" || name == "DISRP") {
     if (st.mode == AxisMode::IC)
       raise(alarm_no::kSyntaxError, fmt::format("{}=IC(..) is not allowed (incremental is the default)", name));
-    (name == "DISCL" ? words_.discl : words_.disrp) = toMm(value());
+    (name == "DISCL" ? words_.discl : words_.disrp) = distance();
     (name == "DISCL" ? words_.discl_ac : words_.disrp_ac) = st.mode == AxisMode::AC;
     return;
   }
@@ -183,10 +190,14 @@ void Interpreter::collectWord(const Stmt& st) {
       if (v.kind == lang::NodeKind::Call && (v.text == "PM" || v.text == "PR")) {
         if (v.b != 1) raise(alarm_no::kSyntaxError, "PM/PR take one value");
         words_.fad = eval_.number(block_, block_.arg(v, 0));
+        if (!std::isfinite(*words_.fad) || *words_.fad < 0 || *words_.fad > 1e9)
+          raise(alarm_no::kValueRange, fmt::format("value range exceeded: FAD={}", *words_.fad));
         return;
       }
     }
     words_.fad = value();
+    if (!std::isfinite(*words_.fad) || *words_.fad < 0 || *words_.fad > 1e9)
+      raise(alarm_no::kValueRange, fmt::format("value range exceeded: FAD={}", *words_.fad));
     return;
   }
   if (name == "SPOS" || name == "SPOSA") { value(); return; }  // spindle positioning

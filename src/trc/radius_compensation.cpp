@@ -273,6 +273,7 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       approach.approach = true;
       approach.strategy = selection_.trc.strategy;
       approach.side = first.side;
+      approach.first_tangent = first.programmed.startTangent();
       approach.programmed = toElement(selection_);
       approach.compensated.p0 = approach.programmed.p0;
       approach.compensated.p1 = first.compensated.p0;
@@ -480,8 +481,10 @@ void RadiusCompensation::bridge(Piece& next) {
       extension_element = fullCircle(c.programmed.p1, std::fabs(next.r0));
       ++n_targets;
     } else if (c.approach && c.strategy == 462) {
+      // G462: the first element's equidistant extended backwards from the approach point along
+      // its start tangent, the mirror image of the retraction's extension (details Q7).
       extension_element.p0 = c.compensated.p1;
-      extension_element.p1 = c.compensated.p1 + unit(c.compensated.p1 - c.compensated.p0);
+      extension_element.p1 = c.compensated.p1 - c.first_tangent;
       ++n_targets;
     }
     std::optional<geom::Crossing> best;
@@ -494,9 +497,10 @@ void RadiusCompensation::bridge(Piece& next) {
                                          : x.u1 > kEps && x.u1 < 1 - 1e-9;
         if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) continue;
         // Like an inside corner: the later element turns towards the compensation side.
-        const Vec2 t1 = target.arc && !extension ? geom::tangentAt(target, x.p)
-                        : extension && target.arc ? unit(x.p - c.compensated.p0)
-                                                  : unit(target.p1 - target.p0);
+        // (With an extension the approach becomes the straight line to the point.)
+        const Vec2 t1 = extension ? unit(x.p - c.compensated.p0)
+                        : target.arc ? geom::tangentAt(target, x.p)
+                                     : unit(target.p1 - target.p0);
         if (next.side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9) continue;
         if (!best || x.u2 < best->u2) best = x;
       }

@@ -50,6 +50,7 @@ class RadiusCompensation {
     bool approach = false;      // the selection block's approach line
     bool restart = false;       // the side changed in this block (G41 <-> G42, sign of R)
     int strategy = 460;         // approach line: G460/G461/G462
+    geom::Vec2 first_tangent;   // approach line: the first element's start tangent (G462)
     std::vector<place::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
     std::vector<place::MotionBlock> waiting;       // blocks without plane motion after it
   };

@@ -183,7 +183,13 @@ void SmoothApproach::motion(const MotionBlock& m) {
         state_ = State::WaitTangent;
         return;
       }
-      if (!hasPlaneMotion(m)) {  // no tangent yet: an infeed or other axis motion
+      if (!hasPlaneMotion(m)) {  // no tangent yet: an infeed; counts against MD20202 too
+        if (static_cast<int>(held_.size()) + held_dummies_ >= max_dummy_blocks_)
+          sarAlarm(10740,
+                   fmt::format("SAR: too many blocks without plane motion between the SAR block "
+                               "and the block that defines the approach direction (MD20202 = {})",
+                               max_dummy_blocks_),
+                   m.line);
         held_.push_back(m);
         return;
       }
@@ -199,7 +205,7 @@ void SmoothApproach::blockWithoutMotion() {
     out_.blockWithoutMotion();
     return;
   }
-  if (++held_dummies_ > max_dummy_blocks_)
+  if (++held_dummies_ + static_cast<int>(held_.size()) > max_dummy_blocks_)
     raise(10740, fmt::format("SAR: too many blocks without traversing motion between the SAR block "
                              "and the block that defines the approach direction (MD20202 = {})",
                              max_dummy_blocks_));
