@@ -280,9 +280,11 @@ void Interpreter::namedWord(const Stmt& st) {
     words_.frame_command = w;
     return;
   }
-  if (w == "STOPRE") sar_.preprocessorStop();
-  if (w == "STOPRE" && trc_.active())
-    notModelled("STOPRE", "a preprocessing stop while tool radius compensation is active (SD42480)");
+  if (w == "STOPRE") {
+    sar_.preprocessorStop();
+    trc_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
+    return;
+  }
   if (isOneOf(w, {"STOPRE", "BRISK", "SOFT", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN",
                   "TOWSTD", "TOWMCS", "TOWWCS", "TOWBCS", "TOWTCS", "TOWKCS", "DIAMOF", "TRAFOOF",
                   "SAVE", "DISPLOF", "DISPLON", "WAITM", "G64"}))

@@ -52,6 +52,7 @@ const std::vector<DataSpec>& MachineData::table() {
       {32300, "MAX_AX_ACCEL", C::AxisMd, 1, false, 0, 1e6, false, "maximum axis acceleration (m/s2)"},
       {42440, "FRAME_OFFSET_INCR_PROG", C::ChannelSd, 1, true, 1, 1, true, "1: offset change traversed with G91"},
       {42442, "TOOL_OFFSET_INCR_PROG", C::ChannelSd, 1, true, 1, 1, true, "1: tool offset traversed with G91"},
+      {42480, "STOP_CUTCOM_STOPRE", C::ChannelSd, 0, true, 0, 1, false, "1: alarm 10778 at a preprocessor stop with TRC"},
       {42900, "MIRROR_TOOL_LENGTH", C::ChannelSd, 0, true, 0, 1, false, "mirror geometry+base lengths"},
       {42910, "MIRROR_TOOL_WEAR", C::ChannelSd, 0, true, 0, 1, false, "mirror wear lengths"},
       {42920, "WEAR_SIGN_CUTPOS", C::ChannelSd, 0, true, 0, 1, false, "wear sign by cutting edge position"},

@@ -313,7 +313,10 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       }
       checkSameSettings(m);
       if (!planeMotion(m)) {
-        window_.back().waiting.push_back(m);
+        if (window_.back().emitted)  // after STOPRE: runs where the last element ended
+          emit(atPoint(m, window_.back().compensated.p1));
+        else
+          window_.back().waiting.push_back(m);
         settings_.max_dummy_blocks = m.trc.max_dummy_blocks;
         blockWithoutMotion();
         return;
@@ -321,6 +324,8 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       Piece& next = window_.pushBack();
       next = compensateNext(m);
       next.index = ++count_;
+      next.restart = next.restart || restart_next_;
+      restart_next_ = false;
       connect(window_[window_.size() - 2], next);
       bridge(next);
       checkOpen(count_ + 1);
@@ -470,7 +475,7 @@ void RadiusCompensation::bridge(Piece& next) {
   std::optional<std::pair<size_t, Vec2>> found;
   for (size_t j = window_.size() - 2; j-- > 0;) {
     const Piece& c = window_[j];
-    if (c.index < oldest) break;
+    if (c.index < oldest || c.emitted) break;
     if (!c.valid || (c.approach && !needed)) continue;
     // The element itself, then for an approach line with G461 a circle of the tool radius about
     // the end point of the uncompensated approach block, with G462 the line's extension; both
@@ -549,7 +554,7 @@ void RadiusCompensation::checkOpen(long next_index) const {
 void RadiusCompensation::release() {
   const long reach = count_ + 1 - settings_.check_blocks;
   while (window_.size() > 1 && window_.front().index < reach) {
-    emitPiece(window_.front());
+    if (!window_.front().emitted) emitPiece(window_.front());
     window_.popFront();
   }
 }
@@ -560,7 +565,8 @@ void RadiusCompensation::flushAll() {
     if (!p.open_before && p.valid) continue;
     collision(p.valid ? window_[i - 1].block.line : p.block.line, settings_.check_blocks);
   }
-  for (size_t i = 0; i < window_.size(); ++i) emitPiece(window_[i]);
+  for (size_t i = 0; i < window_.size(); ++i)
+    if (!window_[i].emitted) emitPiece(window_[i]);
   window_.clear();
 }
 
@@ -576,10 +582,10 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   const Vec2 pe = last.programmed.p1;
   const Vec2 ne = last.side * geom::leftNormal(last.programmed.endTangent());
   Element retract = toElement(m);
-  if (m.trc.approach == Approach::Kont && geom::dot(retract.p1 - pe, ne) < -kEps &&
+  if (m.trc.approach == Approach::Kont && !last.emitted && geom::dot(retract.p1 - pe, ne) < -kEps &&
       kontRetraction(m))
     return;
-  if (last.open_before && (m.trc.strategy == 461 || m.trc.strategy == 462)) {
+  if (last.open_before && !last.emitted && (m.trc.strategy == 461 || m.trc.strategy == 462)) {
     // G461/G462: the last element, which meets no earlier one, is extended by a circle about
     // its programmed end point (radius R) or along its end tangent; the intersection with an
     // earlier element ends that element and starts the retraction (W1 2.4.10, details Q7).
@@ -613,7 +619,7 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   // replaces the normal point (details Q1).
   Piece& fin = window_.back();
   retract.p0 = fin.compensated.p1;
-  if (!fin.approach && geom::length(retract.p1 - retract.p0) > kEps) {
+  if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > kEps) {
     double best = -1;
     for (const auto& x : geom::intersect(fin.compensated, retract))
       if (x.u1 > -kEps && x.u1 < 1 - 1e-9 && x.u2 > 1e-9 && x.u2 < 1 + kEps && x.u1 > best) {
@@ -707,6 +713,37 @@ bool RadiusCompensation::kontRetraction(const MotionBlock& m) {
   emit(toBlock(m, line));
   state_ = State::Off;
   return true;
+}
+
+void RadiusCompensation::preprocessorStop(bool alarm) {
+  if (state_ == State::Off) return;
+  if (alarm)
+    raise(10778, "preprocessor stop with active tool radius compensation (SD42480 = 1)");
+  // "Traversing continues to the offset point in the last block. Correspondingly, the offset
+  // point in the start point is approached in the first block after a preprocessing stop."
+  // (FM-W1 08/2005 2.4.11). The contour may be violated, as the manual warns.
+  Piece anchor;
+  if (state_ == State::Selecting) {
+    const double r = std::fabs(settings_.radius);
+    anchor = compensate(selection_, r, r);
+    Element approach;
+    approach.p0 = anchor.programmed.p0;
+    approach.p1 = anchor.compensated.p1;
+    emit(toBlock(selection_, approach));
+    for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
+    waiting_.clear();
+    state_ = State::On;
+    count_ = 0;
+  } else {
+    anchor = window_.back();
+    flushAll();
+  }
+  anchor.emitted = true;
+  anchor.waiting.clear();
+  anchor.transition.clear();
+  window_.clear();
+  window_.pushBack() = std::move(anchor);
+  restart_next_ = true;
 }
 
 void RadiusCompensation::finish() {

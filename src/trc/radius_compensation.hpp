@@ -30,6 +30,10 @@ class RadiusCompensation {
   void blockWithoutMotion();
   // End of program: the last element ends on its normal at the end point.
   void finish();
+  // A preprocessor stop (STOPRE) while active (W1 2.4.11): the last element ends on its normal
+  // at its end point, the next block approaches the normal point at its start; with SD42480
+  // STOP_CUTCOM_STOPRE = 1 alarm 10778 instead.
+  void preprocessorStop(bool alarm);
   bool active() const { return state_ != State::Off; }
 
  private:
@@ -48,7 +52,8 @@ class RadiusCompensation {
     bool valid = true;          // has an equidistant (an inside arc smaller than R has none)
     bool open_before = false;   // no intersection with the previous element (yet)
     bool approach = false;      // the selection block's approach line
-    bool restart = false;       // the side changed in this block (G41 <-> G42, sign of R)
+    bool restart = false;       // starts anew: side change (G41 <-> G42, sign of R), STOPRE
+    bool emitted = false;       // already written (kept only to join the next element to)
     int strategy = 460;         // approach line: G460/G461/G462
     geom::Vec2 first_tangent;   // approach line: the first element's start tangent (G462)
     std::vector<place::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
@@ -100,6 +105,7 @@ class RadiusCompensation {
   std::vector<place::MotionBlock> waiting_;  // blocks without plane motion after the selection
   PieceWindow<Piece> window_;
   long count_ = 0;                           // traversing blocks since the selection
+  bool restart_next_ = false;                // after STOPRE: the next element starts anew
   int dummy_blocks_ = 0;
   TrcSettings settings_;                     // of the last block
 };
