@@ -581,6 +581,7 @@ def retraction(name, plane, *, title, spec, readings, checks, R=5.0, trc=41, kin
     allrows += [("c1", "G1", (*ce, app4), None, prev_f)] + rows
     assert abs(start[2] - app4) < EPS
     add(name, plane, hdr, body, allrows, meta=(checks, spec, readings))
+    return dict(p3=(*p3p, app3), p4=p4, c3=c3p, c4=c4p)
 
 
 # ==========================================================================================
@@ -1102,6 +1103,176 @@ alarm("alarm_too_many_dummy_blocks", 17,
                  "G1 X60", "M30"],
       [("p0", "G0", (0, 0, 20), None, None)], "d3", 10740,
       "more dummy blocks than MD20202", "6.3, 6.7", ["E1", "E2", "M1"])
+
+# ==========================================================================================
+# 5. Matrix: every SAR type x G340/G341 x G140..G143 x G17/G18/G19, approach and retraction
+#    (README 'Matrix'). TRC, DISR, DISCL/DISRP/FAD, F and the P0 side follow fixed rotations;
+#    P0 is placed from the construction so that every program is valid.
+
+MX_T = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0), (0.6, 0.8), (-0.8, 0.6)]
+MX_P4 = [(10, -5, 0), (-20, 15, -2), (5, 30, 3)]
+MX_DISR = [8, 10, 7, 12]
+MX_UP = 15          # P0.app = P4.app + 15
+
+
+def mx_params(v, app4):
+    """the DISCL/DISRP/FAD rotation: (kwargs, text)"""
+    if v == 0:
+        return dict(discl=3, fad=120), "DISCL=3 FAD=120"
+    if v == 1:
+        return dict(discl=4, disrp=10), "DISCL=4 DISRP=10, no FAD"
+    if v == 2:
+        return dict(fad=90), "no DISCL, FAD=90"
+    return (dict(discl=("AC", app4 + 6), disrp=("AC", app4 + 12), fad=150),
+            f"DISCL=AC({num(app4 + 6)}) DISRP=AC({num(app4 + 12)}) FAD=150")
+
+
+def mx_side(side, s, sigma0):
+    """the side sigma the program is built for (README 'Construction', 'The side')"""
+    if side == 141:
+        return 1
+    if side == 142:
+        return -1
+    if side == 140 and s != 0:
+        return s
+    return sigma0          # G143, and G140 with G40 (behaves like G143)
+
+
+def mx_readings(ret, s, kind, g34, side, prm, extra):
+    rd = ["K2"] if ret else ["V1", "V2"]
+    if ret and s:
+        rd.insert(0, "K1")
+    if not ret and g34 == 341:
+        rd.append("V3")
+    if ret and "f_sar" not in extra:
+        rd.append("K3")
+    dc, dr = prm.get("discl"), prm.get("disrp")
+    if any(v is not None and not isinstance(v, tuple) for v in (dc, dr)):
+        rd.append("D1")
+    if isinstance(dc, tuple) or isinstance(dr, tuple):
+        rd.append("D2")
+    if kind > 1 and (side == 143 or (side == 140 and s == 0)):
+        rd.append("D3")
+    if kind > 1 and g34 == 340 and dc is not None:
+        rd.append("H1")
+    if dc is None:
+        rd += ["Z1", "Z2"] if (g34 == 340 and not ret) else ["Z2"]
+    return rd
+
+
+def matrix():
+    R = 5.0
+    for ret in (False, True):
+        i = 0
+        for ki, kind in enumerate((1, 2, 3)):
+            for gi, g34 in enumerate((340, 341)):
+                for si, side in enumerate((140, 141, 142, 143)):
+                    for pi, plane in enumerate((17, 18, 19)):
+                        mx_case(ret, i, kind, g34, side, plane,
+                                trc=(41, 42, 40)[(pi + si + gi + ki + ret) % 3],
+                                sigma0=1 if (pi + gi + ki + ret) % 2 == 0 else -1, R=R)
+                        i += 1
+
+
+def mx_case(ret, i, kind, g34, side, plane, trc, sigma0, R):
+    s = {41: 1, 42: -1, 40: 0}[trc]
+    t = MX_T[i % len(MX_T)]
+    n = nl(t)
+    p4 = MX_P4[i % len(MX_P4)]
+    p4p, app4 = p4[:2], p4[2]
+    disr = MX_DISR[(i // 4) % len(MX_DISR)]
+    prm, ptxt = mx_params(i % 4, app4)
+    code = f"G{kind}4{8 if ret else 7}"
+    name = f"mx_{code.lower()}_g{g34}_g{side}_g{plane}"
+    trc_txt = f"G{trc}" + (" (selected before, G40 in the SAR block)" if ret and s else "")
+    # the side the program is built for, the contour radius and P3 (README 'Construction')
+    if kind == 1:
+        sigma = sigma0
+        L = (R if s else 0) + disr
+        p3p = vadd(p4p, vmul(L, t)) if ret else vsub(p4p, vmul(L, t))
+        if ret:     # P0 beyond P3 along t, on the side sigma0
+            p0p = vadd(p3p, vadd(vmul(20, t), vmul(15 * sigma, n)))
+            where = "P0 = P3 + 20*t + 15*sigma0*n_L"
+        else:       # P0 behind P3 (against t), on the side sigma0
+            p0p = vadd(p3p, vadd(vmul(-20, t), vmul(15 * sigma, n)))
+            where = "P0 = P3 - 20*t + 15*sigma0*n_L"
+        side_txt = (f"G{side} has no effect on a straight line (the side only exists for "
+                    f"G247/G347 and G248/G348, spec 6.1 syntax). P0 is put on the "
+                    f"{'left' if sigma > 0 else 'right'} of the tangent line at P4 "
+                    f"(sigma0 = {sigma:+d}): {where}.")
+    else:
+        sigma = mx_side(side, s, sigma0)
+        r = disr if s == 0 else (disr + R if sigma == s else disr - R)
+        u = vmul(sigma, n)
+        if kind == 2:
+            p3p = vadd(vadd(p4p, vmul(r, u)), vmul(r if ret else -r, t))
+            # approach: the arc starts along -u; retraction: it ends along +u
+            p0p = vadd(p3p, vadd(vmul(20, u), vmul(10 if ret else -10, t)))
+            where = ("P0 = P3 + 20*u + 10*t (beyond the end of the arc, away from M)" if ret else
+                     "P0 = P3 + 20*u - 10*t (behind the start of the arc, away from M)")
+            k = r + 20
+        else:
+            p3p = vadd(p4p, vmul(2 * r, u))
+            # the semicircle starts (approach) / ends (retraction) along -t at P3
+            p0p = vadd(p3p, vadd(vmul(-20 if ret else 20, t), vmul(10, u)))
+            where = ("P0 = P3 - 20*t + 10*u (beyond the end of the arc)" if ret else
+                     "P0 = P3 + 20*t + 10*u (behind the start of the arc)")
+            k = 2 * r + 10
+        fixed = {141: "G141 fixes sigma = +1", 142: "G142 fixes sigma = -1"}.get(side)
+        if side == 140 and s:
+            fixed = f"G140 with G4{1 if s > 0 else 2} fixes sigma = {s:+d}"
+        if fixed is None:
+            fixed = ((f"G140 with G40 works like G143" if side == 140 else "G143")
+                     + f": P0 is put on the {'left' if sigma > 0 else 'right'} of the tangent "
+                     f"line at P4 (sigma0 = {sigma:+d}), so sigma = {sigma:+d}")
+        side_txt = (f"{fixed}; r = {f6(r)}; u = sigma*n_L. P0 is placed from the construction: "
+                    f"{where}; cross(t, P0-P4) = {f6(k * sigma)} (P0 on the side u).")
+    p0 = (*p0p, app4 + MX_UP)
+    extra = {}
+    if i % 5 != 3:
+        extra["f_sar"] = 900 if ret else 500
+    feed_txt = f"F{num(extra['f_sar'])}" if "f_sar" in extra else "no F"
+    hdr = [f"Matrix case {i + 1} of 72 ({'retraction' if ret else 'approach'}; README 'Matrix'): "
+           f"t = MX_T[{i % 6}], P4 = MX_P4[{i % 3}], DISR = MX_DISR[{(i // 4) % 4}], parameter set "
+           f"{i % 4} ({ptxt}), {feed_txt} in the SAR block, {trc_txt}.", side_txt,
+           f"P0.app = P4.app + {MX_UP}: P0 lies above the plane of P4, so the infeed (approach) / "
+           "lift (retraction) runs in one direction."]
+    if ret:
+        sar_g0 = i % 6 == 1
+        if sar_g0:
+            hdr.append("G0 is written in the SAR block: the lifts run G0, the curve and the FAD "
+                       "lift stay feed motions (K2).")
+        kw = dict(sar_motion="G0", write_motion=True) if sar_g0 else {}
+        start_p = vsub(p4p, vmul(40, t))
+        if s:
+            sel, start = start_p, (*vsub(vsub(start_p, vmul(10, t)), vmul(10, n)), app4)
+        else:
+            sel, start = None, (*start_p, app4)
+        title = (f"matrix retraction {code} G{g34} G{side} G{plane}, {trc_txt}; {ptxt}; "
+                 f"{feed_txt}" + ("; G0" if sar_g0 else "") + ".")
+        checks = (f"matrix: {code} G{g34} G{side} G{plane}, G{trc}, {ptxt}, {feed_txt}"
+                  + (", G0" if sar_g0 else ""))
+        res = retraction(name, plane, title=title, spec="6.1, 6.2 (retraction)",
+                         readings=mx_readings(True, s, kind, g34, side, prm, extra), checks=checks,
+                         R=R, trc=trc, kind=kind, g34=g34, side=side, disr=disr, start=start,
+                         sel=sel, p4=p4, p0=p0, extra_hdr=hdr, **prm, **extra, **kw)
+        assert same(res["p3"][:2], p3p), (name, res["p3"], p3p)
+        return
+    prev = ("G1", 250.0) if i % 7 == 5 else ("G0", 300.0)
+    if prev[0] == "G1":
+        hdr.append("The block before the SAR block is G1 F250: the fast part runs G1 F250 (V1).")
+    title = (f"matrix approach {code} G{g34} G{side} G{plane}, G{trc}; {ptxt}; {feed_txt}"
+             + ("; previous block G1" if prev[0] == "G1" else "") + ".")
+    checks = (f"matrix: {code} G{g34} G{side} G{plane}, G{trc}, {ptxt}, {feed_txt}"
+              + (", previous G1" if prev[0] == "G1" else ""))
+    res = approach(name, plane, title=title, spec="6.1, 6.2",
+                   readings=mx_readings(False, s, kind, g34, side, prm, extra), checks=checks,
+                   R=R, trc=trc, kind=kind, g34=g34, side=side, disr=disr, prev=prev, p0=p0,
+                   p4=p4, cont_end=vadd(p4p, vmul(40, t)), extra_hdr=hdr, **prm, **extra)
+    assert same(res["p3"][:2], p3p), (name, res["p3"], p3p)
+
+
+matrix()
 
 if __name__ == "__main__":
     write_all()
