@@ -149,8 +149,12 @@ MotionBlock subBlock(const MotionBlock& like, const Vec3& from, const Vec3& to, 
 }  // namespace
 
 void SmoothApproach::pass(const MotionBlock& m) {
-  if (hasPlaneMotion(m)) last_ = m;
-  last_trc_ = m.trc;
+  PlaneAxes pa = planeAxes(m.plane);
+  if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > 1e-12 ||
+      std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > 1e-12)
+    last_ = LastContour{m.plane, m.motion, m.start, m.end, m.centre};
+  last_trc_mode_ = m.trc.mode;
+  last_trc_radius_ = m.trc.radius;
   out_.motion(m);
 }
 
@@ -286,8 +290,18 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p4 = s.start;
-  const Vec2 t = tangent(*last_, true);
-  const TrcSettings& active = s.trc.mode == 40 ? last_trc_ : s.trc;  // the side before G40
+  MotionBlock last = s;
+  last.plane = last_->plane;
+  last.motion = last_->motion;
+  last.start = last_->start;
+  last.end = last_->end;
+  last.centre = last_->centre;
+  const Vec2 t = tangent(last, true);
+  TrcSettings active = s.trc;  // with G40 in the block: the side active before it
+  if (s.trc.mode == 40) {
+    active.mode = last_trc_mode_;
+    active.radius = last_trc_radius_;
+  }
   if (!q.plane_axis && (q.side == 143 || (q.side == 140 && trcSide(active) == 0)))
     sarAlarm(10747,
              "SAR: retraction direction not defined: G143 needs the end point in the SAR block",

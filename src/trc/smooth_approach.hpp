@@ -58,8 +58,15 @@ class SmoothApproach {
   int held_dummies_ = 0;                   // blocks without motion in between
   int max_dummy_blocks_ = 5;
   // The last block with plane motion that went through (for the retraction's tangent).
-  std::optional<place::MotionBlock> last_;
-  TrcSettings last_trc_;
+  // (Only what the tangent needs: copying whole blocks cost 100 instructions a block.)
+  struct LastContour {
+    Plane plane = Plane::G17;
+    Motion motion = Motion::G1;
+    Vec3 start, end, centre;
+  };
+  std::optional<LastContour> last_;
+  int last_trc_mode_ = 40;     // G40/G41/G42 of the last block
+  double last_trc_radius_ = 0;
   std::optional<Vec3> end_override_;
   Vec3 apr_, aep_;
   bool apdv_ = false;
