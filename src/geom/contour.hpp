@@ -51,6 +51,27 @@ std::vector<Crossing> intersect(const Element& e1, const Element& e2);
 // The point at fraction u of an element (same parametrisation as Crossing).
 Vec2 pointAt(const Element& e, double u);
 
+// An axis-parallel box around an element (arcs: around their whole circle), for a cheap test
+// before intersecting two elements.
+struct Box {
+  double lo_a = 0, lo_o = 0, hi_a = 0, hi_o = 0;
+  Box() = default;
+  explicit Box(const Element& e) {
+    if (e.arc) {
+      const double r = length(e.p0 - e.c);
+      lo_a = e.c.a - r, hi_a = e.c.a + r, lo_o = e.c.o - r, hi_o = e.c.o + r;
+    } else {
+      lo_a = std::fmin(e.p0.a, e.p1.a), hi_a = std::fmax(e.p0.a, e.p1.a);
+      lo_o = std::fmin(e.p0.o, e.p1.o), hi_o = std::fmax(e.p0.o, e.p1.o);
+    }
+  }
+  bool overlaps(const Box& b) const {
+    constexpr double kSlack = 1e-6;
+    return lo_a <= b.hi_a + kSlack && b.lo_a <= hi_a + kSlack && lo_o <= b.hi_o + kSlack &&
+           b.lo_o <= hi_o + kSlack;
+  }
+};
+
 // The unit tangent in the direction of travel at point p of the element (p on its line/circle).
 Vec2 tangentAt(const Element& e, Vec2 p);
 

@@ -50,7 +50,9 @@ void Interpreter::collectWord(const Stmt& st) {
     lang::Node target;
     target.kind = lang::NodeKind::Name;
     target.text = name;
-    store(target, eval_.eval(block_, st.expr));
+    store(target, st.literal ? (st.literal_int ? lang::Value::integer(st.literal_value)
+                                               : lang::Value::real(st.literal_value))
+                             : eval_.eval(block_, st.expr));
     return;
   }
   if (name.size() == 1) {
@@ -457,7 +459,7 @@ void Interpreter::doMotion() {
   m.tool_offset = applied_offset_;
   m.plane = modal_.plane;
   m.trc.mode = modal_.trc;
-  m.trc.radius = modal_.offn + (edge_.valid ? effectiveLengths(edge_.data, edge_.settings).radius : 0.0);
+  m.trc.radius = modal_.offn + (edge_.valid ? edge_.radius : 0.0);
   m.trc.approach = modal_.approach;
   m.trc.corner = modal_.corner;
   m.trc.collision = modal_.collision;

@@ -445,6 +445,7 @@ void Interpreter::callSubprogram(std::string_view name, long long repeat) {
 
 UserVariable* Interpreter::findVariable(std::string_view name) {
   auto& loc = levels_.empty() ? main_vars_ : levels_.back().locals;
+  if (loc.empty() && globals_.empty()) return nullptr;  // the common case: no hashing
   if (auto it = loc.find(name); it != loc.end()) return &it->second;
   if (auto it = globals_.find(name); it != globals_.end()) return &it->second;
   return nullptr;

@@ -178,6 +178,11 @@ class Interpreter final : public lang::Environment {
     EdgeData data;
     ToolSettings settings;
     std::array<bool, 3> mirrored{false, false, false};
+    double radius = 0;  // effective radius (edge + wear), fixed with the snapshot
+    // toolOffset() for `cached_plane` (computed once per edge and plane, not per block).
+    mutable bool offset_cached = false;
+    mutable Plane cached_plane = Plane::G17;
+    mutable Vec3 cached_offset;
   } edge_;
   Vec3 applied_offset_;  // BCS length vector as taken up axis by axis by linear blocks
   int md_change_mode_ = 0, md_change_m_ = 0, md_default_edge_ = 0;

@@ -127,11 +127,18 @@ void Interpreter::selectEdge(int d) {
   edge_.settings.length_const = static_cast<long>(data_.get(sd_length_const_));
   edge_.settings.length_type = static_cast<long>(data_.get(sd_length_type_));
   edge_.mirrored = ncoffset::chain(iframe_, pframe_).mirror;
+  edge_.radius = effectiveLengths(edge_.data, edge_.settings).radius;
+  edge_.offset_cached = false;
 }
 
 Vec3 Interpreter::toolOffset() const {
   if (!edge_.valid) return {};
-  return lengthVector(edge_.data, edge_.settings, modal_.plane, edge_.mirrored);
+  if (!edge_.offset_cached || edge_.cached_plane != modal_.plane) {
+    edge_.cached_offset = lengthVector(edge_.data, edge_.settings, modal_.plane, edge_.mirrored);
+    edge_.cached_plane = modal_.plane;
+    edge_.offset_cached = true;
+  }
+  return edge_.cached_offset;
 }
 
 bool Interpreter::readTool(std::string_view name, std::span<const Value> idx, bool indexed,

@@ -452,6 +452,7 @@ class Parser {
       return;
     }
     if (peek() == '=' && peek(1) != '=') {
+      if (isExtendedAddress(name) && literalWord(name, col)) return;
       ++i_;
       int value = expression();
       if (isExtendedAddress(name)) {
@@ -517,6 +518,35 @@ class Parser {
     b_.stmts.push_back(st);
   }
 
+  // `CR=10`, `DISR=-5.5`: an address with '=' and a plain number, the common case, kept as a
+  // literal word without an expression node (the same statement the expression path makes, only
+  // cheaper). Anything else (an operator, a function, 1EX3, AC(..)) takes the expression path.
+  bool literalWord(std::string_view name, int col) {
+    const size_t save = i_;
+    ++i_;  // '='
+    bool negative = false;
+    if (peek() == '-' || peek() == '+') negative = s_[i_++] == '-';
+    if (!(isDigit(peek()) || (peek() == '.' && isDigit(peek(1))))) {
+      i_ = save;
+      return false;
+    }
+    bool is_int = false;
+    const double v = scanNumber(is_int);
+    size_t j = i_;
+    while (j < s_.size() && s_[j] == ' ') ++j;
+    const bool ends = j == s_.size() || s_[j] == ';' || (j > i_ && isAlpha(s_[j]));
+    if (!ends) {
+      i_ = save;
+      return false;
+    }
+    Stmt st = wordStmt(name, col, true);
+    st.literal = true;
+    st.literal_int = is_int;
+    st.literal_value = negative ? -v : v;
+    b_.stmts.push_back(st);
+    return true;
+  }
+
   static bool isExtendedAddress(std::string_view name) {
     if (name.size() == 1) return name[0] != '$' && name[0] != '_';
     static constexpr std::string_view kAddr[] = {
@@ -529,14 +559,19 @@ class Parser {
     return false;
   }
 
-  void addWord(std::string_view address, int ext, int value, int col, bool equals) {
+  static Stmt wordStmt(std::string_view address, int col, bool equals) {
     Stmt st;
     st.kind = StmtKind::Word;
     st.name = address;
-    st.ext = ext;
-    st.expr = value;
     st.column = col;
     st.has_equals = equals;
+    return st;
+  }
+
+  void addWord(std::string_view address, int ext, int value, int col, bool equals) {
+    Stmt st = wordStmt(address, col, equals);
+    st.ext = ext;
+    st.expr = value;
     // X=AC(..) / X=IC(..): absolute or incremental dimension for this word only.
     const Node& v = b_.node(value);
     if (v.kind == NodeKind::Call && (v.text == "AC" || v.text == "IC")) {

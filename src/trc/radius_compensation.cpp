@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "geom/disc_curve.hpp"
 #include "ncoffset/alarm.hpp"
@@ -26,6 +27,7 @@ constexpr double kDiscTolerance = 1e-3;
 }
 
 bool sameAffine(const Affine& a, const Affine& b) {
+  if (std::memcmp(&a, &b, sizeof(Affine)) == 0) return true;  // the usual case, bit for bit
   for (size_t i = 0; i < 3; ++i) {
     if (std::fabs(a.offset[static_cast<int>(i)] - b.offset[static_cast<int>(i)]) > 1e-12) return false;
     for (size_t j = 0; j < 3; ++j)
@@ -65,26 +67,6 @@ Element fullCircle(Vec2 c, double r) {
   e.ccw = true;
   return e;
 }
-
-// The bounding box of an element (arcs: their whole circle), for a cheap test before
-// intersecting two elements.
-struct Box {
-  double lo_a, lo_o, hi_a, hi_o;
-  explicit Box(const Element& e) {
-    if (e.arc) {
-      const double r = geom::length(e.p0 - e.c);
-      lo_a = e.c.a - r, hi_a = e.c.a + r, lo_o = e.c.o - r, hi_o = e.c.o + r;
-    } else {
-      lo_a = std::fmin(e.p0.a, e.p1.a), hi_a = std::fmax(e.p0.a, e.p1.a);
-      lo_o = std::fmin(e.p0.o, e.p1.o), hi_o = std::fmax(e.p0.o, e.p1.o);
-    }
-  }
-  bool overlaps(const Box& b) const {
-    constexpr double kSlack = 1e-6;
-    return lo_a <= b.hi_a + kSlack && b.lo_a <= hi_a + kSlack && lo_o <= b.hi_o + kSlack &&
-           b.lo_o <= hi_o + kSlack;
-  }
-};
 
 [[noreturn]] void collision(int line, int check_blocks) {
   throw AlarmError(10751,
@@ -153,6 +135,19 @@ bool RadiusCompensation::planeMotion(const MotionBlock& m) const {
 RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, double r0,
                                                           double r1) const {
   Piece p;
+  compensateInto(p, m, r0, r1);
+  return p;
+}
+
+void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0,
+                                        double r1) const {
+  // Every field is set: `p` may be a reused slot of the window (its vectors keep their memory).
+  p.index = 0;
+  p.valid = true;
+  p.open_before = p.approach = p.restart = p.emitted = false;
+  p.strategy = 460;
+  p.transition.clear();
+  p.waiting.clear();
   p.block = m;
   p.programmed = toElement(m);
   p.r0 = r0;
@@ -182,7 +177,11 @@ RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, d
     p.compensated.p1 = e.c + (rb / geom::length(e.p1 - e.c)) * (e.p1 - e.c);
   }
   p.raw = p.compensated;
-  return p;
+  p.box = geom::Box(p.raw);  // the trimmed element always stays inside
+  if (r0 != r1) {            // a varying value (spiral, inclined line): widen by the change
+    const double d = std::fabs(r1 - r0);
+    p.box.lo_a -= d, p.box.lo_o -= d, p.box.hi_a += d, p.box.hi_o += d;
+  }
 }
 
 Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const {
@@ -192,7 +191,7 @@ Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const
   return e ? *e : p.compensated;
 }
 
-RadiusCompensation::Piece RadiusCompensation::compensateNext(const MotionBlock& m) {
+void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
   const double old_side = side(), old_r = std::fabs(settings_.radius);
   const double new_r = std::fabs(m.trc.radius);
   settings_ = m.trc;
@@ -200,11 +199,11 @@ RadiusCompensation::Piece RadiusCompensation::compensateNext(const MotionBlock& 
     // G41 <-> G42 (or the sign of the value) while active: the last element ends on its normal,
     // the new side starts on the normal at this block's start (PM-NC "change of compensation
     // direction"; details Q8 for the sign).
-    Piece p = compensate(m, new_r, new_r);
+    compensateInto(p, m, new_r, new_r);
     p.restart = true;
-    return p;
+    return;
   }
-  return compensate(m, old_r, std::fabs(old_r - new_r) < 1e-12 ? old_r : new_r);
+  compensateInto(p, m, old_r, std::fabs(old_r - new_r) < 1e-12 ? old_r : new_r);
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) {
@@ -295,6 +294,7 @@ void RadiusCompensation::motion(const MotionBlock& m) {
         if (best < 2) first.compensated.p0 = approach.compensated.p1;
       }
       approach.raw = approach.compensated;
+      approach.box = geom::Box(approach.raw);
       approach.waiting = std::move(waiting_);
       waiting_.clear();
       window_.clear();
@@ -322,7 +322,7 @@ void RadiusCompensation::motion(const MotionBlock& m) {
         return;
       }
       Piece& next = window_.pushBack();
-      next = compensateNext(m);
+      compensateNext(next, m);
       next.index = ++count_;
       next.restart = next.restart || restart_next_;
       restart_next_ = false;
@@ -471,7 +471,7 @@ void RadiusCompensation::bridge(Piece& next) {
   // (W1 2.4.8, details Q5).
   const long oldest = next.index - settings_.check_blocks;
   const Element later = cornerEquidistant(next, false);
-  const Box later_box(later);
+  const geom::Box later_box = next.r0 == next.r1 ? next.box : geom::Box(later);
   std::optional<std::pair<size_t, Vec2>> found;
   for (size_t j = window_.size() - 2; j-- > 0;) {
     const Piece& c = window_[j];
@@ -496,7 +496,7 @@ void RadiusCompensation::bridge(Piece& next) {
     for (int k = 0; k < n_targets; ++k) {
       const bool extension = k > 0;
       const Element& target = extension ? extension_element : c.compensated;
-      if (!extension && !Box(target).overlaps(later_box)) continue;
+      if (!extension && !c.box.overlaps(later_box)) continue;
       for (const auto& x : geom::intersect(target, later)) {
         const bool on_target = extension ? (!target.arc ? x.u1 > -kEps : true)
                                          : x.u1 > kEps && x.u1 < 1 - 1e-9;

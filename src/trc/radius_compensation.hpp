@@ -46,6 +46,7 @@ class RadiusCompensation {
     geom::Element programmed;
     geom::Element compensated;  // start and end as far as they are known
     geom::Element raw;          // the whole equidistant (before corners trimmed it)
+    geom::Box box;              // around `raw` (so around every trimmed part of it)
     double r0 = 0, r1 = 0;      // compensation value at the start and the end (D change, Q8)
     double side = 1;            // +1: tool left of the travel, -1: right
     long index = 0;             // traversing blocks since the selection (approach = 0)
@@ -67,12 +68,13 @@ class RadiusCompensation {
   void emit(const place::MotionBlock& m) { out_.motion(m); }
   void emitPiece(const Piece& p);
   Piece compensate(const place::MotionBlock& m, double r0, double r1) const;
+  void compensateInto(Piece& p, const place::MotionBlock& m, double r0, double r1) const;
   // The equidistant at the constant value the corner calculation uses (details Q8: the end
   // value of the first element, the start value of the second).
   geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
   // The next element with its compensation value (a change spreads over the block, Q8) and
   // side (a change of side starts anew at the block's start, like a selection).
-  Piece compensateNext(const place::MotionBlock& m);
+  void compensateNext(Piece& p, const place::MotionBlock& m);
   // Joins `next` to the last element of the window (corner).
   void connect(Piece& cur, Piece& next);
   // The transition about corner point p from a (tangent ta) to b (tangent tb): the circle of
