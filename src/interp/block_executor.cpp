@@ -481,7 +481,9 @@ void Interpreter::doMotion() {
               fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i], "XYZ"[i]));
   block_moved_ = true;
   if (words_.sar) {
-    SarRequest& q = m.sar;
+    sar_request_ = SarRequest{};
+    SarRequest& q = sar_request_;
+    m.sar = &q;
     q.type = words_.sar;
     q.side = modal_.sar_side;
     q.space = modal_.sar_plane;

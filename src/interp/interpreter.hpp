@@ -121,6 +121,7 @@ class Interpreter final : public lang::Environment {
   place::Placement placement_;
   trc::RadiusCompensation trc_;
   trc::SmoothApproach sar_;
+  SarRequest sar_request_;                 // of the current block (MotionBlock::sar points here)
   double feed_before_ = 0;                 // the modal feed before the current block
   Motion motion_before_ = Motion::G0;      // the modal G0..G3 before the current block
   PathSink& sink_;

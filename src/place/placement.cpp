@@ -5,25 +5,29 @@
 namespace ncoffset::place {
 
 Segment Placement::toSegment(const MotionBlock& m) const {
+  return toSegment(m, {m.motion, m.start, m.end, m.centre, m.applicate, m.turns});
+}
+
+Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
   Segment s;
   s.line = m.line;
   s.file = m.file;
-  s.motion = m.motion;
-  s.turns = m.turns;
+  s.motion = g.motion;
+  s.turns = g.turns;
   s.feed = m.feed;
   s.has_feed = m.has_feed;
   Vec3 normal;
-  normal[m.applicate] = 1;
+  normal[g.applicate] = 1;
   if (coords_ == CoordSystem::WCS) {
-    s.start = m.start;
-    s.end = m.end;
-    s.centre = m.centre;
+    s.start = g.start;
+    s.end = g.end;
+    s.centre = g.centre;
     s.normal = normal;
   } else {
-    s.start = m.frame.apply(m.start) + m.tool_offset;
-    s.end = m.frame.apply(m.end) + m.tool_offset;
-    if (m.motion == Motion::G2 || m.motion == Motion::G3) {
-      s.centre = m.frame.apply(m.centre) + m.tool_offset;
+    s.start = m.frame.apply(g.start) + m.tool_offset;
+    s.end = m.frame.apply(g.end) + m.tool_offset;
+    if (g.motion == Motion::G2 || g.motion == Motion::G3) {
+      s.centre = m.frame.apply(g.centre) + m.tool_offset;
       // The arc turns about frame * normal; a mirrored frame (det < 0) reverses its sense.
       Vec3 n = m.frame.linear * normal;
       double len = norm(n);
@@ -37,13 +41,17 @@ Segment Placement::toSegment(const MotionBlock& m) const {
         s.normal = -1.0 * s.normal;
         flip = !flip;
       }
-      if (flip) s.motion = m.motion == Motion::G2 ? Motion::G3 : Motion::G2;
+      if (flip) s.motion = g.motion == Motion::G2 ? Motion::G3 : Motion::G2;
     }
   }
   return s;
 }
 
 void Placement::motion(const MotionBlock& m) { sink_.segment(toSegment(m)); }
+
+void Placement::motion(const MotionBlock& like, const Geometry& g) {
+  sink_.segment(toSegment(like, g));
+}
 
 void Placement::warning(const MotionBlock& m, int number, const std::string& text) {
   static const std::string kUnknown = "?";

@@ -29,7 +29,9 @@ struct MotionBlock {
   bool has_feed = false;
   int line = 0;
   int file = 0;
-  SarRequest sar;     // smooth approach / retraction (type 0: none)
+  // Smooth approach / retraction of the block, null for every other block (a pointer: blocks
+  // are copied along the pipeline, the request is needed by one stage only).
+  const SarRequest* sar = nullptr;
 };
 
 class Placement {
@@ -43,6 +45,15 @@ class Placement {
   }
   // A motion of the (compensated) path.
   void motion(const MotionBlock& m);
+  // The geometry of a motion, with everything else (line, feed, frame, tool) from `like`:
+  // saves copying a whole block for every compensated element.
+  struct Geometry {
+    Motion motion;
+    Vec3 start, end, centre;
+    int applicate;
+    int turns;
+  };
+  void motion(const MotionBlock& like, const Geometry& g);
   // The programmed motion of a block, for sinks that draw the contour (PathSink::programmed).
   void programmed(const MotionBlock& m);
   // A warning of the compensation stage (not interrupting).
@@ -50,6 +61,7 @@ class Placement {
 
  private:
   Segment toSegment(const MotionBlock& m) const;
+  Segment toSegment(const MotionBlock& m, const Geometry& g) const;
 
   PathSink& sink_;
   CoordSystem coords_;

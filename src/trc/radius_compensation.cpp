@@ -100,23 +100,37 @@ Element RadiusCompensation::toElement(const MotionBlock& m) const {
   return e;
 }
 
-MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
+place::Placement::Geometry RadiusCompensation::geometry(const MotionBlock& like,
+                                                        const Element& e) const {
   PlaneAxes pa = planeAxes(like.plane);
-  MotionBlock b = like;
-  b.start[pa.abscissa] = e.p0.a;
-  b.start[pa.ordinate] = e.p0.o;
-  b.end[pa.abscissa] = e.p1.a;
-  b.end[pa.ordinate] = e.p1.o;
+  place::Placement::Geometry g{like.motion, like.start, like.end, like.centre, like.applicate,
+                               like.turns};
+  g.start[pa.abscissa] = e.p0.a;
+  g.start[pa.ordinate] = e.p0.o;
+  g.end[pa.abscissa] = e.p1.a;
+  g.end[pa.ordinate] = e.p1.o;
   if (e.arc) {
-    b.motion = e.ccw ? Motion::G3 : Motion::G2;
-    b.centre[pa.abscissa] = e.c.a;
-    b.centre[pa.ordinate] = e.c.o;
-    b.centre[pa.applicate] = b.start[pa.applicate];
-    b.applicate = pa.applicate;
-    b.turns = e.turns;
-  } else if (b.motion == Motion::G2 || b.motion == Motion::G3) {
-    b.motion = Motion::G1;
+    g.motion = e.ccw ? Motion::G3 : Motion::G2;
+    g.centre[pa.abscissa] = e.c.a;
+    g.centre[pa.ordinate] = e.c.o;
+    g.centre[pa.applicate] = g.start[pa.applicate];
+    g.applicate = pa.applicate;
+    g.turns = e.turns;
+  } else if (g.motion == Motion::G2 || g.motion == Motion::G3) {
+    g.motion = Motion::G1;
   }
+  return g;
+}
+
+MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
+  const place::Placement::Geometry g = geometry(like, e);
+  MotionBlock b = like;
+  b.motion = g.motion;
+  b.start = g.start;
+  b.end = g.end;
+  b.centre = g.centre;
+  b.applicate = g.applicate;
+  b.turns = g.turns;
   return b;
 }
 
@@ -208,7 +222,7 @@ void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
 
 void RadiusCompensation::emitPiece(const Piece& p) {
   for (const MotionBlock& t : p.transition) emit(t);
-  emit(toBlock(p.block, p.compensated));
+  out_.motion(p.block, geometry(p.block, p.compensated));  // no copy of the block
   for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
 }
 

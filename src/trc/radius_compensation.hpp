@@ -63,6 +63,8 @@ class RadiusCompensation {
 
   geom::Element toElement(const place::MotionBlock& m) const;
   place::MotionBlock toBlock(const place::MotionBlock& like, const geom::Element& e) const;
+  // The geometry of element `e` as a motion of block `like` (lines stay G0/G1).
+  place::Placement::Geometry geometry(const place::MotionBlock& like, const geom::Element& e) const;
   // A block of `like` that keeps its applicate motion but stands at plane point `at`.
   place::MotionBlock atPoint(const place::MotionBlock& like, geom::Vec2 at) const;
   void emit(const place::MotionBlock& m) { out_.motion(m); }

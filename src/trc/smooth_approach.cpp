@@ -59,7 +59,7 @@ struct Shape {
 
 Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, Vec2 ref,
                 bool approach) {
-  const SarRequest& q = s.sar;
+  const SarRequest& q = *s.sar;
   const int kind = q.type / 100;  // 1 line, 2 quadrant, 3 semicircle
   const double side = trcSide(trc), radius = side != 0 ? std::fabs(trc.radius) : 0.0;
   const Vec2 n = geom::leftNormal(t);
@@ -135,7 +135,7 @@ void checkMonotonic(std::initializer_list<double> apps, int line) {
 MotionBlock subBlock(const MotionBlock& like, const Vec3& from, const Vec3& to, Motion mo,
                      double feed) {
   MotionBlock b = like;
-  b.sar = SarRequest{};
+  b.sar = nullptr;
   b.start = from;
   b.end = to;
   b.motion = mo;
@@ -161,16 +161,18 @@ void SmoothApproach::pass(const MotionBlock& m) {
 void SmoothApproach::motion(const MotionBlock& m) {
   switch (state_) {
     case State::Idle:
-      if (m.sar.approach()) {
+      if (m.sar && m.sar->approach()) {
+        request_ = *m.sar;  // kept: the interpreter's request belongs to the current block
         sar_ = m;
+        sar_.sar = &request_;
         p4_.reset();
         held_.clear();
         held_dummies_ = 0;
         apdv_ = false;  // $P_APR/$P_AEP still belong to an older approach
-        state_ = m.sar.plane_axis ? State::WaitTangent : State::WaitP4;
+        state_ = request_.plane_axis ? State::WaitTangent : State::WaitP4;
         return;
       }
-      if (m.sar.retraction()) {
+      if (m.sar && m.sar->retraction()) {
         retraction(m);
         return;
       }
@@ -178,7 +180,7 @@ void SmoothApproach::motion(const MotionBlock& m) {
       return;
     case State::WaitP4:
     case State::WaitTangent:
-      if (m.sar.type != 0)
+      if (m.sar)
         sarAlarm(10743, "SAR programmed several times: the previous approach is not complete",
                  m.line);
       if (state_ == State::WaitP4) {
@@ -230,7 +232,7 @@ void SmoothApproach::finish() {
 
 void SmoothApproach::approach(const MotionBlock& tangent_block) {
   const MotionBlock& s = sar_;
-  const SarRequest& q = s.sar;
+  const SarRequest& q = *s.sar;
   const MotionBlock& p4b = p4_ ? *p4_ : s;
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
@@ -283,7 +285,7 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
 }
 
 void SmoothApproach::retraction(const MotionBlock& s) {
-  const SarRequest& q = s.sar;
+  const SarRequest& q = *s.sar;
   if (!last_)
     sarAlarm(10744, "SAR: no valid retraction direction: no contour block before the SAR block",
              s.line);

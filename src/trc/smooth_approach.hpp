@@ -20,6 +20,8 @@ namespace ncoffset::trc {
 class SmoothApproach {
  public:
   explicit SmoothApproach(RadiusCompensation& out) : out_(out) {}
+  SmoothApproach(const SmoothApproach&) = delete;  // sar_.sar points into the object
+  SmoothApproach& operator=(const SmoothApproach&) = delete;
   void motion(const place::MotionBlock& m);
   // A block reaching the main run without any motion.
   void blockWithoutMotion();
@@ -53,6 +55,7 @@ class SmoothApproach {
   RadiusCompensation& out_;
   State state_ = State::Idle;
   place::MotionBlock sar_;                 // the approach block
+  SarRequest request_;                     // its request (sar_.sar points here)
   std::optional<place::MotionBlock> p4_;   // the block that supplies P4 (if not sar_)
   std::vector<place::MotionBlock> held_;   // geometry blocks between P4 and the tangent block
   int held_dummies_ = 0;                   // blocks without motion in between

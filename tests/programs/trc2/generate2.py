@@ -535,5 +535,282 @@ add("cdon_omitted_applicate_g18", 18,
      ("n50", "G1", (30, 30, -3), None, 100)],
     errs=[("n20", "warning", 10763), ("n30", "warning", 10763)])
 
+# ------------------------------------------------------------------------------------------
+# 9. DISC in G18 / G19 (docs/radius-compensation.md "DISC", details Q3 model [D])
+
+DISC_MODEL = [
+    "MODEL (docs 'DISC', details Q3 [D]): rational quadratic Bezier A -> S -> B, A = end of the first",
+    "  equidistant, B = start of the second, S = where the tangents at A and B meet, P = corner point;",
+    "  o = R + DISC/100*(|PS| - R), h = |P - mid(A,B)|, w = (o - h)/(|PS| - o) (puts C(1/2) at",
+    "  distance o from P on the bisector).",
+    "  C(t) = ((1-t)^2 A + 2wt(1-t) S + t^2 B)/((1-t)^2 + 2wt(1-t) + t^2).",
+    "  Written as n straight G1 chords C((i-1)/n) -> C(i/n), i = 1..n, uniform in t; n = the smallest",
+    "  power of two >= 2 for which every chord deviates <= 0.001 mm (distance of C((i-1/2)/n) from the",
+    "  chord line). All chord rows carry the line and feed of the second block (G450 circle rule, Q3).",
+    "  MD20220 CUTCOM_MAX_DISC default 50 does not limit DISC = 30."]
+
+
+def bez(A, S, B, w, t):
+    u = 1 - t
+    d = u * u + 2 * w * t * u + t * t
+    return ((u * u * A[0] + 2 * w * t * u * S[0] + t * t * B[0]) / d,
+            (u * u * A[1] + 2 * w * t * u * S[1] + t * t * B[1]) / d)
+
+
+def chord_dev(p, q, m):
+    """distance of m from the line p-q"""
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    return abs(dx * (m[1] - p[1]) - dy * (m[0] - p[0])) / SQ(dx * dx + dy * dy)
+
+
+def disc_curve(A, S, B, Pc, R, disc):
+    """numbers of the model above: (o, h, |PS|, w, n, max deviation at n and at n/2, points)."""
+    PS = math.hypot(S[0] - Pc[0], S[1] - Pc[1])
+    o = R + disc / 100 * (PS - R)
+    M = ((A[0] + B[0]) / 2, (A[1] + B[1]) / 2)
+    h = math.hypot(M[0] - Pc[0], M[1] - Pc[1])
+    w = (o - h) / (PS - o)
+    devs = {}
+    n = 2
+    while True:
+        devs[n] = max(chord_dev(bez(A, S, B, w, (i - 1) / n), bez(A, S, B, w, i / n),
+                                bez(A, S, B, w, (i - 0.5) / n)) for i in range(1, n + 1))
+        if devs[n] <= 0.001:
+            break
+        n *= 2
+    pts = [bez(A, S, B, w, i / n) for i in range(1, n + 1)]
+    return o, h, PS, w, n, devs[n], devs.get(n // 2), pts
+
+
+def um(v):
+    return f"{v * 1000:.3f} um"
+
+
+# G18, G42, R = 5, 90 deg
+Pd = (50.0, 0.0)
+Ad, Bd, Sd = (50.0, -5.0), (55.0, 0.0), (55.0, -5.0)
+od, hd, PSd, wd, nd, devd, devd2, ptsd = disc_curve(Ad, Sd, Bd, Pd, 5, 30)
+add("disc_30_g18_g42", 18,
+    ["disc_30_g18_g42: DISC=30 under G450 at one 90 deg outside corner in G18 with G42 (spec 5.4,",
+     "details Q3): the transition circle becomes the DISC curve, written as straight chords.",
+     CONV, PLANE_TXT[18] + ". R = 5, G42 offset = -5*n_L = 5*(t_o, -t_a).", *DISC_MODEL,
+     "Approach NORM from P0 = (-10,-20) to P1 = (0,0): N10 (0,0)->(50,0) t = (1,0), offset (0,-5):",
+     "  Q1 = (0,-5) (the line meets o = -5 only at Q1); N10's equidistant o = -5.",
+     "N10/N11: N11 (50,0)->(50,40) t = (0,1), n_L = (-1,0), offset (5,0): a = 55. cross((1,0),(0,1)) = 1",
+     "  > 0: left turn = outside for G42, deflection 90 deg. P = (50,0), A = (50,-5), B = (55,0),",
+     f"  S = (55,-5); |PS| = 5*sqrt2 = {f6(PSd)}.",
+     f"  o = 5 + 0.3*({f6(PSd)} - 5) = {f6(od)}; h = 5*cos45 = {f6(hd)};",
+     f"  w = ({f6(od)} - {f6(hd)})/({f6(PSd)} - {f6(od)}) = {f6(wd)}.",
+     f"  n = {nd} chords: max deviation {um(devd)} (n = {nd // 2}: {um(devd2)} > 1 um).",
+     f"  First chord ends at C(1/{nd}) = {P(ptsd[0])}; middle point C(1/2) = P + o*(1,-1)/sqrt2 =",
+     f"  {P(ptsd[nd // 2 - 1])}; the last ends at B.",
+     "Retraction NORM: Qe = (50,40) + (5,0) = (55,40) -> P2 = (70,50).",
+     f"Rows (a,o): G0 (-10,-20) | sel (0,-5) F100 | N10 (50,-5) | {nd} chords of N11 (line N11, F200) |",
+     "  N11 (55,40) F200 | G40 (70,50)."],
+    tool() + [f"@g0 G18 G90 G0 {words(18, -10, -20, 0)}", "DISC=30",
+              f"@sel G42 G450 G1 {words(18, 0, 0)} F100", f"@n10 {words(18, 50)}",
+              f"@n11 {words(18, None, 40)} F200", f"@ret G40 {words(18, 70, 50)}", "M30"],
+    [("g0", "G0", (-10, -20, 0), None, ""), ("sel", "G1", (0, -5, 0), None, 100),
+     ("n10", "G1", (50, -5, 0), None, 100)]
+    + [("n11", "G1", (*p, 0), None, 200) for p in ptsd]
+    + [("n11", "G1", (55, 40, 0), None, 200), ("ret", "G1", (70, 50, 0), None, 200)])
+
+# G19, G41, R = 6, 60 deg deflection
+E11 = (50.0, -17.320508076)          # as programmed (9 decimals): 20 * (cos -60, sin -60) from (40,0)
+L11 = math.hypot(E11[0] - 40, E11[1])
+t11 = ((E11[0] - 40) / L11, E11[1] / L11)
+n11 = (-t11[1], t11[0])
+Pe = (40.0, 0.0)
+Ae = (40.0, 6.0)
+Be = (40 + 6 * n11[0], 6 * n11[1])
+# S: the tangent at A (o = 6) meets the line through B along t11
+Se = (Be[0] + (6 - Be[1]) / t11[1] * t11[0], 6.0)
+defl = math.degrees(math.acos(t11[0]))
+oe, he, PSe, we, ne, deve, deve2, ptse = disc_curve(Ae, Se, Be, Pe, 6, 30)
+Qe11 = (E11[0] + 6 * n11[0], E11[1] + 6 * n11[1])
+add("disc_30_g19_g41", 19,
+    ["disc_30_g19_g41: DISC=30 under G450 at one 60 deg outside corner (deflection) in G19 with G41",
+     "(spec 5.4, details Q3): the transition circle becomes the DISC curve, written as straight chords.",
+     CONV, PLANE_TXT[19] + ". R = 6, G41 offset = 6*n_L.", *DISC_MODEL,
+     "Approach NORM from P0 = (-10,10) to P1 = (0,0): N10 (0,0)->(40,0) t = (1,0), n_L = (0,1): o = 6,",
+     "  Q1 = (0,6) (the line meets o = 6 only at Q1).",
+     f"N11 (40,0)->{P(E11)} (programmed Y50 Z-17.320508076, length {f6(L11)}): t = {P(t11)},",
+     f"  n_L = {P(n11)}; cross((1,0),t) = {f6(t11[1])} < 0: right turn = outside for G41, deflection",
+     f"  {f6(defl)} deg. P = (40,0), A = (40,6), B = P + 6*n_L = {P(Be)}; S = where o = 6 meets the",
+     f"  line through B along t: {P(Se)} (= P + 6/cos30*(sin30,cos30)); |PS| = 6/cos30 = {f6(PSe)}.",
+     f"  o = 6 + 0.3*({f6(PSe)} - 6) = {f6(oe)}; h = 6*cos30 = {f6(he)};",
+     f"  w = ({f6(oe)} - {f6(he)})/({f6(PSe)} - {f6(oe)}) = {f6(we)}.",
+     f"  n = {ne} chords: max deviation {um(deve)} (n = {ne // 2}: {um(deve2)} > 1 um).",
+     f"  First chord ends at C(1/{ne}) = {P(ptse[0])}; middle point C(1/2) = P + o*(sin30,cos30) =",
+     f"  {P(ptse[ne // 2 - 1])}; the last ends at B.",
+     f"Retraction NORM: Qe = {P(E11)} + 6*n_L = {P(Qe11)} -> P2 = (70,-10)",
+     "  (moves to the tool side, cuts nothing).",
+     f"Rows (a,o): G0 (-10,10) | sel (0,6) F100 | N10 (40,6) | {ne} chords of N11 (line N11, F250) |",
+     f"  N11 {P(Qe11)} F250 | G40 (70,-10)."],
+    tool(6) + [f"@g0 G19 G90 G0 {words(19, -10, 10, 0)}", "DISC=30",
+               f"@sel G41 G450 G1 {words(19, 0, 0)} F100", f"@n10 {words(19, 40)}",
+               f"@n11 {words(19, *E11)} F250", f"@ret G40 {words(19, 70, -10)}", "M30"],
+    [("g0", "G0", (-10, 10, 0), None, ""), ("sel", "G1", (0, 6, 0), None, 100),
+     ("n10", "G1", (40, 6, 0), None, 100)]
+    + [("n11", "G1", (*p, 0), None, 250) for p in ptse]
+    + [("n11", "G1", (*Qe11, 0), None, 250), ("ret", "G1", (70, -10, 0), None, 250)])
+
+# ------------------------------------------------------------------------------------------
+# 10. G461 / G462 at the approach in G18/G19, G461 at the retraction in G19:
+#     the spec 5.3 geometry rotated or mirrored
+
+SQ75 = SQ(75)
+R5 = 1 / SQ(5)
+READ_G46X = ("READING (docs 'Selection, approach, retraction', details Q7): G461 = circle of radius R about "
+             "the approach block's programmed end point P1 (retraction: the last block's programmed end "
+             "point) intersected with the later (earlier) equidistants; G462 on the approach = the first "
+             "element's equidistant extended backwards along its start tangent from Q1. The approach "
+             "(retraction) line runs straight to that point; the blocks in between are omitted with "
+             "warning 10763.")
+
+# 10a. G461 approach, G18: spec 5.3 rotated by +90 deg, (a,o) -> (-o,a); G42 stays
+S10a = (-10.0, 50 - SQ75)
+add("g461_approach_rot90_g18", 18,
+    ["g461_approach_rot90_g18: the G461 example of spec 5.3 (R = 10, G42, NORM, G450, CDOF) in G18,",
+     "rotated by +90 deg ((a,o) -> (-o,a); a rotation keeps G42 and G3). The spec's N40 is the G0",
+     "block here; the F words are those of the spec program.",
+     CONV, PLANE_TXT[18] + ". G42 offset = -10*n_L = 10*(t_o, -t_a).", READ_G46X,
+     "G0 to (-20,0). Selection G42 G461 to P1 = (-5,50), F10000.",
+     "  N60 (-5,50)->(0,50) t = (1,0), offset (0,-10): o = 40, a in [-5,0] (5 long < R): Q1 = (-5,40).",
+     "  N70 (0,50)->(0,30) t = (0,-1), n_L = (1,0), offset (-10,0): a = -10, o in [30,50].",
+     f"  N80 (0,30)->(5,20) t = (1,-2)/sqrt5, n_L = (2,1)/sqrt5, offset -10*n_L: "
+     f"{P((-20 * R5, 30 - 10 * R5))} -> {P((5 - 20 * R5, 20 - 10 * R5))}.",
+     "N60/N70: cross((1,0),(0,-1)) = -1: right turn = inside for G42; o = 40 and a = -10 meet at",
+     "  (-10,40), not on N60 (a in [-5,0]): no intersection. The NORM approach line (-20,0)->(-5,40)",
+     "  meets a = -10 at o = 26.67 (not in [30,50]).",
+     "G461: circle about P1 = (-5,50), radius 10, with a = -10: (o-50)^2 = 100 - 25 = 75 ->",
+     f"  o = 50 - sqrt75 = {f6(S10a[1])} (in [30,50]; 58.66 is not). S = {P(S10a)}.",
+     "  Approach line (-20,0) -> S: d = (10,41.34), cross(d, t70) = 10*(-1) - 41.34*0 = -10 < 0:",
+     "  it enters from the compensation side (valid for G42). N60 omitted (warning 10763).",
+     "N70/N80: cross((0,-1),(1,-2)/sqrt5) = 0.447 > 0: left turn = outside for G42, 26.57 deg: G450",
+     f"  circle about (0,30) from (-10,30) to {P((-20 * R5, 30 - 10 * R5))}, G3 (angle 180 -> 206.57 deg),",
+     "  belongs to N80 (F600).",
+     f"N90 G40 to (0,0): NORM retraction from {P((5 - 20 * R5, 20 - 10 * R5))} (N80 meets N70, so G461",
+     "  has nothing to do there).",
+     f"Rows (a,o): G0 (-20,0) | sel {P(S10a)} F10000 | N70 (-10,30) F600 | N80 G3 c (0,30) |",
+     "  N80 G1 | N90 (0,0)."],
+    tool(10) + [f"@g0 G18 G90 G0 {words(18, -20, 0, 0)}",
+                f"@sel N50 G42 G1 {words(18, -5, 50)} G461 F10000", f"@n60 N60 {words(18, 0)} F600",
+                f"@n70 N70 {words(18, None, 30)}", f"@n80 N80 {words(18, 5, 20)}",
+                f"@n90 N90 {words(18, 0, 0)} G40", "N100 M30"],
+    [("g0", "G0", (-20, 0, 0), None, ""), ("sel", "G1", (*S10a, 0), None, 10000),
+     ("n70", "G1", (-10, 30, 0), None, 600),
+     ("n80", "G3", (-20 * R5, 30 - 10 * R5, 0), (0, 30, 0), 600),
+     ("n80", "G1", (5 - 20 * R5, 20 - 10 * R5, 0), None, 600),
+     ("n90", "G1", (0, 0, 0), None, 600)],
+    errs=[("n60", "warning", 10763)])
+
+# 10b. G461 approach, G19: spec 5.3 mirrored o -> -o; G42 -> G41, G3 -> G2
+S10b = (50 - SQ75, -10.0)
+add("g461_approach_mirror_g19", 19,
+    ["g461_approach_mirror_g19: the G461 example of spec 5.3 (R = 10, NORM, G450, CDOF) in G19,",
+     "mirrored o -> -o (a mirror turns G42 into G41 and G3 into G2). The spec's N40 is the G0 block",
+     "here; the F words are those of the spec program.",
+     CONV, PLANE_TXT[19] + ". G41 offset = 10*n_L.", READ_G46X,
+     "G0 to (0,-20). Selection G41 G461 to P1 = (50,-5), F10000.",
+     "  N60 (50,-5)->(50,0) t = (0,1), n_L = (-1,0): a = 40, o in [-5,0] (5 long < R): Q1 = (40,-5).",
+     "  N70 (50,0)->(30,0) t = (-1,0), n_L = (0,-1): o = -10, a in [30,50].",
+     f"  N80 (30,0)->(20,5) t = (-2,1)/sqrt5, n_L = (-1,-2)/sqrt5: "
+     f"{P((30 - 10 * R5, -20 * R5))} -> {P((20 - 10 * R5, 5 - 20 * R5))}.",
+     "N60/N70: cross((0,1),(-1,0)) = 1 > 0: left turn = inside for G41; a = 40 and o = -10 meet at",
+     "  (40,-10), not on N60 (o in [-5,0]): no intersection. The NORM approach line (0,-20)->(40,-5)",
+     "  meets o = -10 at a = 26.67 (not in [30,50]).",
+     "G461: circle about P1 = (50,-5), radius 10, with o = -10: (a-50)^2 = 75 ->",
+     f"  a = 50 - sqrt75 = {f6(S10b[0])} (in [30,50]; 58.66 is not). S = {P(S10b)}.",
+     "  Approach line (0,-20) -> S: d = (41.34,10), cross(d, t70) = 41.34*0 - 10*(-1) = 10 > 0:",
+     "  it enters from the compensation side (valid for G41). N60 omitted (warning 10763).",
+     "N70/N80: cross((-1,0),(-2,1)/sqrt5) = -0.447 < 0: right turn = outside for G41, 26.57 deg:",
+     f"  G450 circle about (30,0) from (30,-10) to {P((30 - 10 * R5, -20 * R5))}, G2 (angle 270 ->",
+     "  243.43 deg), belongs to N80 (F600).",
+     f"N90 G40 to (0,0): NORM retraction from {P((20 - 10 * R5, 5 - 20 * R5))}.",
+     f"Rows (a,o): G0 (0,-20) | sel {P(S10b)} F10000 | N70 (30,-10) F600 | N80 G2 c (30,0) |",
+     "  N80 G1 | N90 (0,0)."],
+    tool(10) + [f"@g0 G19 G90 G0 {words(19, 0, -20, 0)}",
+                f"@sel N50 G41 G1 {words(19, 50, -5)} G461 F10000", f"@n60 N60 {words(19, None, 0)} F600",
+                f"@n70 N70 {words(19, 30)}", f"@n80 N80 {words(19, 20, 5)}",
+                f"@n90 N90 {words(19, 0, 0)} G40", "N100 M30"],
+    [("g0", "G0", (0, -20, 0), None, ""), ("sel", "G1", (*S10b, 0), None, 10000),
+     ("n70", "G1", (30, -10, 0), None, 600),
+     ("n80", "G2", (30 - 10 * R5, -20 * R5, 0), (30, 0, 0), 600),
+     ("n80", "G1", (20 - 10 * R5, 5 - 20 * R5, 0), None, 600),
+     ("n90", "G1", (0, 0, 0), None, 600)],
+    errs=[("n60", "warning", 10763)])
+
+# 10c. G461 retraction, G19: g461_retraction_mirror_g17 rotated by -90 deg, (a,o) -> (o,-a); G41
+S10c = (10.0, -50 + SQ75)
+Q10c = (10 * 2 * R5 - 5, -20 + 10 * R5)
+E10c = (10 * 2 * R5, -30 + 10 * R5)
+add("g461_retraction_rot_g19", 19,
+    ["g461_retraction_rot_g19: G461 in the G40 block in G19: the geometry of g461_retraction_mirror_g17",
+     "(the spec 5.3 path reversed, G41) rotated by -90 deg ((a,o) -> (o,-a); G41 and G2 stay). The last",
+     "block e3 is shorter than R and meets no earlier equidistant.",
+     CONV, PLANE_TXT[19] + ". R = 10, G41 offset = 10*n_L, G450, CDOF.", READ_G46X,
+     "Approach NORM from P0 = (-10,0) to P1 = (-5,-20), F1000.",
+     f"  e1 (-5,-20)->(0,-30) t = (1,-2)/sqrt5, n_L = (2,1)/sqrt5: Q1 = {P(Q10c)}, e1 ends at {P(E10c)}.",
+     "e1/e2: e2 (0,-30)->(0,-50) t = (0,-1), n_L = (1,0): a = 10, o in [-50,-30];",
+     "  cross(t1,t2) = -1/sqrt5 < 0: right turn = outside for G41, 26.57 deg: G450 circle about",
+     f"  (0,-30) from {P(E10c)} to (10,-30), G2 (angle 26.57 -> 0 deg), belongs to e2 (F600).",
+     "e3 (0,-50)->(5,-50) t = (1,0), n_L = (0,1): o = -40, a in [0,5].",
+     "e2/e3: cross((0,-1),(1,0)) = 1 > 0: left turn = inside; (10,-40) is not on e3 (a in [0,5]):",
+     "  no intersection; e3 vs e1 and the approach line: none. The NORM retraction line",
+     "  (5,-40) -> (20,0) meets a = 10 at o = -26.67: not on e2.",
+     "G461 (G40 block): circle about e3's programmed end point Pe = (5,-50), radius 10, with a = 10:",
+     f"  (o+50)^2 = 75 -> o = -50 + sqrt75 = {f6(S10c[1])} (in [-50,-30]; -58.66 is not): the latest",
+     f"  point on e2. -> e2 ends at {P(S10c)}; e3 omitted (warning 10763); the retraction row runs",
+     "  from there to P2 = (20,0) (moves away from a = 10: cuts nothing).",
+     f"Rows (a,o): G0 (-10,0) | sel {P(Q10c)} F1000 | e1 {P(E10c)} F600 |",
+     f"  e2 G2 (10,-30) c (0,-30) | e2 G1 {P(S10c)} | G40 (20,0)."],
+    tool(10) + [f"@g0 G19 G90 G0 {words(19, -10, 0, 0)}",
+                f"@sel G41 G1 {words(19, -5, -20)} F1000", f"@e1 {words(19, 0, -30)} F600",
+                f"@e2 {words(19, None, -50)}", f"@e3 {words(19, 5)}",
+                f"@ret G40 G461 {words(19, 20, 0)}", "M30"],
+    [("g0", "G0", (-10, 0, 0), None, ""), ("sel", "G1", (*Q10c, 0), None, 1000),
+     ("e1", "G1", (*E10c, 0), None, 600), ("e2", "G2", (10, -30, 0), (0, -30, 0), 600),
+     ("e2", "G1", (*S10c, 0), None, 600), ("ret", "G1", (20, 0, 0), None, 600)],
+    errs=[("e3", "warning", 10763)])
+
+# 10d. G462 approach, G19: spec 5.3 rotated by 180 deg, (a,o) -> (-a,-o); G42 and G3 stay
+add("g462_approach_rot180_g19", 19,
+    ["g462_approach_rot180_g19: G462 in the selection block in G19: the spec 5.3 program with G462",
+     "(as g462_pm_example_tangent_reading) rotated by 180 deg ((a,o) -> (-a,-o); G42 and G3 stay).",
+     "The spec's N40 is the G0 block here; the F words are those of the spec program.",
+     CONV, PLANE_TXT[19] + ". R = 10, G450, CDOF.", "G42 offset = -10*n_L = 10*(t_o, -t_a).",
+     READ_G46X,
+     "G0 to (0,-20). Selection G42 G462 to P1 = (-50,-5), F10000.",
+     "  N60 (-50,-5)->(-50,0) t = (0,1), n_L = (-1,0), offset (10,0): a = -40, o in [-5,0]:",
+     "    Q1 = (-40,-5).",
+     "  N70 (-50,0)->(-30,0) t = (1,0), n_L = (0,1), offset (0,-10): o = -10, a in [-50,-30].",
+     f"  N80 (-30,0)->(-20,5) t = (2,1)/sqrt5, n_L = (-1,2)/sqrt5, offset -10*n_L: "
+     f"{P((-30 + 10 * R5, -20 * R5))} -> {P((-20 + 10 * R5, 5 - 20 * R5))}.",
+     "N60/N70: cross((0,1),(1,0)) = -1: right turn = inside for G42; (-40,-10) is not on N60",
+     "  (o in [-5,0]): no intersection. The NORM approach line (0,-20)->(-40,-5) meets o = -10 at",
+     "  a = -26.67 (not in [-50,-30]).",
+     "G462: N60's equidistant a = -40 extended backwards from Q1 = (-40,-5) against t = (0,1), i.e.",
+     "  towards -o: meets o = -10 at S = (-40,-10), in N70's range [-50,-30].",
+     "  Approach line (0,-20) -> S: d = (-40,10), cross(d, t70) = -40*0 - 10*1 = -10 < 0: it enters",
+     "  from the compensation side (valid for G42). N60 omitted (warning 10763).",
+     "N70/N80: cross((1,0),(2,1)/sqrt5) = 0.447 > 0: left turn = outside for G42, 26.57 deg: G450",
+     f"  circle about (-30,0) from (-30,-10) to {P((-30 + 10 * R5, -20 * R5))}, G3 (angle 270 ->",
+     "  296.57 deg), belongs to N80 (F600).",
+     f"N90 G40 to (0,0): NORM retraction from {P((-20 + 10 * R5, 5 - 20 * R5))} (N80 meets N70, so",
+     "  G462 has nothing to do there).",
+     "Rows (a,o): G0 (0,-20) | sel (-40,-10) F10000 | N70 (-30,-10) F600 | N80 G3 c (-30,0) | N80 G1 |",
+     "  N90 (0,0)."],
+    tool(10) + [f"@g0 G19 G90 G0 {words(19, 0, -20, 0)}",
+                f"@sel N50 G42 G1 {words(19, -50, -5)} G462 F10000", f"@n60 N60 {words(19, None, 0)} F600",
+                f"@n70 N70 {words(19, -30)}", f"@n80 N80 {words(19, -20, 5)}",
+                f"@n90 N90 {words(19, 0, 0)} G40", "N100 M30"],
+    [("g0", "G0", (0, -20, 0), None, ""), ("sel", "G1", (-40, -10, 0), None, 10000),
+     ("n70", "G1", (-30, -10, 0), None, 600),
+     ("n80", "G3", (-30 + 10 * R5, -20 * R5, 0), (-30, 0, 0), 600),
+     ("n80", "G1", (-20 + 10 * R5, 5 - 20 * R5, 0), None, 600),
+     ("n90", "G1", (0, 0, 0), None, 600)],
+    errs=[("n60", "warning", 10763)])
+
 if __name__ == "__main__":
     g.write_all()
