@@ -2,6 +2,7 @@
 
 #include <fmt/compile.h>
 
+#include <charconv>
 #include <cmath>
 
 namespace ncoffset::out {
@@ -19,8 +20,7 @@ char* writeShortest(char* out, double v) {
     const double back = static_cast<double>(m) / 1e6;
     if ((v < 0 ? -back : back) == v) {
       if (v < 0) *out++ = '-';
-      fmt::format_int whole(m / 1000000);
-      for (const char* d = whole.data(); d != whole.data() + whole.size(); ++d) *out++ = *d;
+      out = std::to_chars(out, out + 20, m / 1000000).ptr;
       unsigned frac = static_cast<unsigned>(m % 1000000);
       if (frac) {
         char digits[7] = {'.', '0', '0', '0', '0', '0', '0'};
