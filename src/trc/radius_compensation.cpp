@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "geom/disc_curve.hpp"
 #include "ncoffset/alarm.hpp"
@@ -18,6 +19,8 @@ namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 constexpr double kEps = 1e-9;
+// The index of a block that never comes (for checkOpen when the window is flushed).
+constexpr long kNoLaterBlock = std::numeric_limits<long>::max() / 2;
 // How far the straight chords of a DISC transition curve may deviate from the curve (mm).
 constexpr double kDiscTolerance = 1e-3;
 
@@ -574,11 +577,7 @@ void RadiusCompensation::release() {
 }
 
 void RadiusCompensation::flushAll() {
-  for (size_t i = 1; i < window_.size(); ++i) {
-    const Piece& p = window_[i];
-    if (!p.open_before && p.valid) continue;
-    collision(p.valid ? window_[i - 1].block.line : p.block.line, settings_.check_blocks);
-  }
+  checkOpen(kNoLaterBlock);  // no later block: every open junction stays open
   for (size_t i = 0; i < window_.size(); ++i)
     if (!window_[i].emitted) emitPiece(window_[i]);
   window_.clear();
@@ -596,9 +595,10 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   const Vec2 pe = last.programmed.p1;
   const Vec2 ne = last.side * geom::leftNormal(last.programmed.endTangent());
   Element retract = toElement(m);
-  if (m.trc.approach == Approach::Kont && !last.emitted && geom::dot(retract.p1 - pe, ne) < -kEps &&
-      kontRetraction(m))
+  if (m.trc.approach == Approach::Kont && !last.emitted && geom::dot(retract.p1 - pe, ne) < -kEps) {
+    kontRetraction(m);
     return;
+  }
   if (last.open_before && !last.emitted && (m.trc.strategy == 461 || m.trc.strategy == 462)) {
     // G461/G462: the last element, which meets no earlier one, is extended by a circle about
     // its programmed end point (radius R) or along its end tangent; the intersection with an
@@ -690,7 +690,7 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
 // the last element, an arc about its end point to the tangent point of the line through the
 // programmed end point (G450), or the last equidistant extended to that line (G451); then the
 // straight line to the programmed end point. Both belong to the G40 block.
-bool RadiusCompensation::kontRetraction(const MotionBlock& m) {
+void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   Piece& last = window_.back();
   const Vec2 pe = last.programmed.p1;
   const Vec2 p2 = toElement(m).p1;
@@ -715,7 +715,7 @@ bool RadiusCompensation::kontRetraction(const MotionBlock& m) {
       flushAll();
       emit(toBlock(m, line));
       state_ = State::Off;
-      return true;
+      return;
     }
   }
   std::vector<MotionBlock> around;
@@ -726,7 +726,6 @@ bool RadiusCompensation::kontRetraction(const MotionBlock& m) {
   for (const MotionBlock& b : around) emit(b);
   emit(toBlock(m, line));
   state_ = State::Off;
-  return true;
 }
 
 void RadiusCompensation::preprocessorStop(bool alarm) {

@@ -96,7 +96,7 @@ class RadiusCompensation {
   void flushAll();
   void startWindow(Piece approach, Piece first);
   void kontApproach(Piece& approach, Piece& first);
-  bool kontRetraction(const place::MotionBlock& m);
+  void kontRetraction(const place::MotionBlock& m);
   void retract(const place::MotionBlock& m);
   void checkSameSettings(const place::MotionBlock& m) const;
   bool planeMotion(const place::MotionBlock& m) const;

@@ -10,23 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "writer_test_support.hpp"
+
 namespace ncoffset::out {
 namespace {
 
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using File = std::unique_ptr<std::FILE, FileCloser>;
-
-std::string readAll(std::FILE* f) {
-  std::fflush(f);
-  std::rewind(f);
-  std::string s;
-  char buf[4096];
-  size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
-  return s;
-}
+using test::File;
+using test::readAll;
 
 std::vector<std::string> lines(const std::string& s) {
   std::vector<std::string> out;

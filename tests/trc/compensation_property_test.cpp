@@ -36,6 +36,19 @@ double segmentDistance(P2 p, P2 a, P2 b) {
   return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
 }
 
+// The point at fraction u of an output row (line or arc in G17).
+P2 samplePoint(const Segment& s, double u) {
+  if (s.motion == Motion::G1 || s.motion == Motion::G0)
+    return {s.start.x + u * (s.end.x - s.start.x), s.start.y + u * (s.end.y - s.start.y)};
+  double a0 = std::atan2(s.start.y - s.centre.y, s.start.x - s.centre.x);
+  double a1 = std::atan2(s.end.y - s.centre.y, s.end.x - s.centre.x);
+  double sweep = s.motion == Motion::G3 ? a1 - a0 : a0 - a1;
+  while (sweep < 0) sweep += 2 * M_PI;
+  double a = a0 + (s.motion == Motion::G3 ? 1 : -1) * u * sweep;
+  double rad = std::hypot(s.start.x - s.centre.x, s.start.y - s.centre.y);
+  return {s.centre.x + rad * std::cos(a), s.centre.y + rad * std::sin(a)};
+}
+
 TEST(CompensationProperty, RandomClosedContoursStayAtTheRadius) {
   std::mt19937 rng(20261123);
   std::uniform_real_distribution<double> unit(0, 1);
@@ -80,19 +93,7 @@ TEST(CompensationProperty, RandomClosedContoursStayAtTheRadius) {
       const Segment& s = out.rows[k];
       if (s.line < 9 || s.line > 7 + n) continue;
       for (int j = 0; j <= 20; ++j) {
-        double u = j / 20.0;
-        P2 p;
-        if (s.motion == Motion::G1 || s.motion == Motion::G0) {
-          p = {s.start.x + u * (s.end.x - s.start.x), s.start.y + u * (s.end.y - s.start.y)};
-        } else {
-          double a0 = std::atan2(s.start.y - s.centre.y, s.start.x - s.centre.x);
-          double a1 = std::atan2(s.end.y - s.centre.y, s.end.x - s.centre.x);
-          double sweep = s.motion == Motion::G3 ? a1 - a0 : a0 - a1;
-          while (sweep < 0) sweep += 2 * M_PI;
-          double a = a0 + (s.motion == Motion::G3 ? 1 : -1) * u * sweep;
-          double rad = std::hypot(s.start.x - s.centre.x, s.start.y - s.centre.y);
-          p = {s.centre.x + rad * std::cos(a), s.centre.y + rad * std::sin(a)};
-        }
+        const P2 p = samplePoint(s, j / 20.0);
         double d = 1e300;
         for (int e = 0; e < n; ++e)
           d = std::min(d, segmentDistance(p, poly[static_cast<size_t>(e)], poly[static_cast<size_t>((e + 1) % n)]));
@@ -135,17 +136,6 @@ double edgeDistance(P2 p, const Edge& e) {
   return std::min(std::hypot(p.x - e.a.x, p.y - e.a.y), std::hypot(p.x - e.b.x, p.y - e.b.y));
 }
 
-P2 samplePoint(const Segment& s, double u) {
-  if (s.motion == Motion::G1 || s.motion == Motion::G0)
-    return {s.start.x + u * (s.end.x - s.start.x), s.start.y + u * (s.end.y - s.start.y)};
-  double a0 = std::atan2(s.start.y - s.centre.y, s.start.x - s.centre.x);
-  double a1 = std::atan2(s.end.y - s.centre.y, s.end.x - s.centre.x);
-  double sweep = s.motion == Motion::G3 ? a1 - a0 : a0 - a1;
-  while (sweep < 0) sweep += 2 * M_PI;
-  double a = a0 + (s.motion == Motion::G3 ? 1 : -1) * u * sweep;
-  double rad = std::hypot(s.start.x - s.centre.x, s.start.y - s.centre.y);
-  return {s.centre.x + rad * std::cos(a), s.centre.y + rad * std::sin(a)};
-}
 
 // The same property on contours of lines and arcs (convex and concave), with CDON or CDOF: the
 // compensated path keeps at least R from every element, exactly R with G450, also where the
