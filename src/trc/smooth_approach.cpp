@@ -146,6 +146,21 @@ MotionBlock subBlock(const MotionBlock& like, const Vec3& from, const Vec3& to, 
   return b;
 }
 
+// The SAR curve from `from` to `to` as a sub-block of `like`: a line, or the arc (a helix when
+// the applicate changes) about the shape's centre at the applicate of its start.
+MotionBlock curveBlock(const MotionBlock& like, const Vec3& from, const Vec3& to,
+                       const Shape& shape, double feed) {
+  MotionBlock b = subBlock(like, from, to, Motion::G1, feed);
+  if (shape.arc) {
+    const int app = planeAxes(like.plane).applicate;
+    b.motion = shape.ccw ? Motion::G3 : Motion::G2;
+    b.centre = point(like, shape.centre, from[app]);
+    b.applicate = app;
+    b.turns = 0;
+  }
+  return b;
+}
+
 }  // namespace
 
 void SmoothApproach::pass(const MotionBlock& m) {
@@ -270,13 +285,7 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
   const double contour_f = q.space == 340 && q.has_fad ? q.fad
                            : p4_ && p4_->has_feed && !q.f_programmed ? p4_->feed
                                                                       : sar_f;
-  MotionBlock curve = sub(p4b, p3, p4, Motion::G1, contour_f);
-  if (shape.arc) {
-    curve.motion = shape.ccw ? Motion::G3 : Motion::G2;
-    curve.centre = point(s, shape.centre, p3[app]);
-    curve.applicate = app;
-    curve.turns = 0;
-  }
+  const MotionBlock curve = curveBlock(p4b, p3, p4, shape, contour_f);
   for (int i = 0; i < held_dummies_; ++i) out_.blockWithoutMotion();
   held_dummies_ = 0;
   emit(curve);
@@ -328,18 +337,13 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   const double old_f = q.feed_before;
   const Motion own = s.motion == Motion::G0 ? Motion::G0 : Motion::G1;
   std::vector<MotionBlock> subs;
-  auto sub = [&](const Vec3& from, const Vec3& to, Motion mo, double feed) {
-    MotionBlock b = subBlock(s, from, to, mo, feed);
-    if (norm(to - from) > 1e-12) subs.push_back(b);
-    return subs.empty() ? nullptr : &subs.back();
+  auto keep = [&](const MotionBlock& b) {  // sub-blocks without length give no row
+    if (norm(b.end - b.start) > 1e-12) subs.push_back(b);
   };
-  MotionBlock* curve = sub(p4, p3, Motion::G1, q.space == 340 && q.has_fad ? q.fad : old_f);
-  if (curve && shape.arc && norm(p3 - p4) > 1e-12) {
-    curve->motion = shape.ccw ? Motion::G3 : Motion::G2;
-    curve->centre = point(s, shape.centre, p4[app]);
-    curve->applicate = app;
-    curve->turns = 0;
-  }
+  auto sub = [&](const Vec3& from, const Vec3& to, Motion mo, double feed) {
+    keep(subBlock(s, from, to, mo, feed));
+  };
+  keep(curveBlock(s, p4, p3, shape, q.space == 340 && q.has_fad ? q.fad : old_f));
   if (q.space == 341) {
     sub(p3, p2, Motion::G1, q.has_fad ? q.fad : old_f);
     sub(p2, p1, own, q.feed_value);
