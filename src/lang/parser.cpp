@@ -16,14 +16,30 @@ bool isAlpha(char c) { return (c >= 'A' && c <= 'Z') || c == '_' || c == '$'; }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isIdentChar(char c) { return isAlpha(c) || isDigit(c); }
 
+// Up to eight characters packed into one integer (first character lowest), so that a name is
+// looked up in a keyword list by one switch instead of string comparisons; names longer than
+// eight characters pack to 0, which matches no keyword.
+constexpr std::uint64_t packName(std::string_view w) {
+  if (w.empty() || w.size() > 8) return 0;
+  std::uint64_t v = 0;
+  for (size_t i = 0; i < w.size(); ++i)
+    v |= static_cast<std::uint64_t>(static_cast<unsigned char>(w[i])) << (8 * i);
+  return v;
+}
+
 // Keywords that open or continue statements with their own syntax.
 bool isControlKeyword(std::string_view w) {
-  static constexpr std::string_view kWords[] = {
-      "DEF", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "REPEAT", "UNTIL",
-      "LOOP", "ENDLOOP", "GOTOF", "GOTOB", "GOTO", "GOTOC", "CASE", "PROC"};
-  for (auto k : kWords)
-    if (k == w) return true;
-  return false;
+  switch (packName(w)) {
+    case packName("DEF"): case packName("IF"): case packName("ELSE"): case packName("ENDIF"):
+    case packName("WHILE"): case packName("ENDWHILE"): case packName("FOR"):
+    case packName("ENDFOR"): case packName("REPEAT"): case packName("UNTIL"):
+    case packName("LOOP"): case packName("ENDLOOP"): case packName("GOTOF"):
+    case packName("GOTOB"): case packName("GOTO"): case packName("GOTOC"):
+    case packName("CASE"): case packName("PROC"):
+      return true;
+    default:
+      return false;
+  }
 }
 
 int jumpKind(std::string_view w) {
@@ -33,6 +49,10 @@ int jumpKind(std::string_view w) {
   if (w == "GOTOC") return 4;
   return 0;
 }
+
+// Exact powers of ten for Clinger's fast path (mantissa <= 15 digits divided by 10^decimals).
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 class Parser {
  public:
@@ -62,6 +82,7 @@ class Parser {
         i_ = j + 1;
       }
     }
+    if (simpleWords()) return;
     while (true) {
       skipSpaces();
       if (i_ >= s_.size()) break;
@@ -159,9 +180,6 @@ class Parser {
     if (len == 0 || (len == 1 && *begin == '.')) syntax("number expected");
     if (len > 21) syntax("number with too many digits (at most 20)");
     double v;
-    static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                        1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                        1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     if (significant <= 15 && decimals <= 22) {
       v = static_cast<double>(mant) / kPow10[decimals];
     } else {
@@ -186,6 +204,79 @@ class Parser {
     }
     is_int_out = is_int;
     return v;
+  }
+
+  // Fast path for the blocks CAM systems write (`G1 X10.5 Y-2 F1000`, `G3 X5 Y5 CR=10`): only
+  // address words with a plain number, single letters (X10) or extended addresses with '='
+  // (CR=10). It makes the same statements the general path makes for these words; at the first
+  // thing it does not know it drops what it made and returns false, and the general path parses
+  // the block from the same position (and reports any error).
+  bool simpleWords() {
+    // The buffer is a std::string: a '\0' follows its last character (normalizeLine lets no
+    // other '\0' through), which ends every scan below without a length check.
+    const char* const base = s_.c_str();
+    const char* p = base + i_;
+    const size_t first = b_.stmts.size();
+    auto isBlank = [](char c) { return c == ' ' || c == '\t'; };
+    auto isLetter = [](char c) { return c >= 'A' && c <= 'Z'; };
+    auto give_up = [&] {
+      b_.stmts.resize(first);
+      return false;
+    };
+    while (isBlank(*p)) ++p;
+    while (*p != '\0') {
+      const char* const word = p;
+      if (!isLetter(*p)) return give_up();
+      ++p;
+      while (isLetter(*p)) ++p;
+      const std::string_view name(word, static_cast<size_t>(p - word));
+      const bool equals = name.size() > 1;
+      if (equals) {
+        // CR=10: an extended address directly followed by '=' (no '==').
+        if (*p != '=' || p[1] == '=' || !isExtendedAddress(name)) return give_up();
+        ++p;
+      }
+      bool negative = false;
+      if (*p == '-' || *p == '+') negative = *p++ == '-';
+      // Digits with at most one point, converted as scanNumber converts them (at most 15
+      // digits: Clinger's fast path).
+      const char* const digits = p;
+      unsigned long long mant = 0;
+      while (isDigit(*p)) mant = mant * 10 + static_cast<unsigned>(*p++ - '0');
+      const char* point = p;
+      if (*p == '.') {
+        ++p;
+        while (isDigit(*p)) mant = mant * 10 + static_cast<unsigned>(*p++ - '0');
+      }
+      const bool is_int = *point != '.';
+      const auto count = static_cast<size_t>(p - digits) - (is_int ? 0 : 1);
+      if (count == 0 || count > 15) return give_up();
+      const int decimals = is_int ? 0 : static_cast<int>(p - point - 1);
+      // What may follow: the end, a blank, or (single letters only: G1X10) the next address
+      // but not an exponent (1EX3). After single letters a '=' makes an assignment (R1=5,
+      // M2=6, I1=5).
+      const char* next = p;
+      while (isBlank(*next)) ++next;
+      if (equals) {
+        if (next == p && *p != '\0') return give_up();
+      } else {
+        if (next == p && *p != '\0' && (!isLetter(*p) || (p[0] == 'E' && p[1] == 'X')))
+          return give_up();
+        if (*next == '=' || (*word == 'R' && isDigit(word[1]))) return give_up();
+      }
+      const double v = static_cast<double>(mant) / kPow10[decimals];
+      Stmt& st = b_.stmts.emplace_back();
+      st.kind = StmtKind::Word;
+      st.name = name;
+      st.column = static_cast<int>(word - base) + 1;
+      st.has_equals = equals;
+      st.literal = true;
+      st.literal_int = is_int;
+      st.literal_value = negative ? -v : v;
+      p = next;
+    }
+    i_ = s_.size();
+    return true;
   }
 
   // 'H1F' hexadecimal and 'B101' binary constants.
@@ -452,10 +543,11 @@ class Parser {
       return;
     }
     if (peek() == '=' && peek(1) != '=') {
-      if (isExtendedAddress(name) && literalWord(name, col)) return;
+      const bool address = isExtendedAddress(name);
+      if (address && literalWord(name, col)) return;
       ++i_;
       int value = expression();
-      if (isExtendedAddress(name)) {
+      if (address) {
         addWord(name, -1, value, col, true);
       } else {
         Node t;
@@ -539,24 +631,31 @@ class Parser {
       i_ = save;
       return false;
     }
-    Stmt st = wordStmt(name, col, true);
+    Stmt& st = b_.stmts.emplace_back(wordStmt(name, col, true));
     st.literal = true;
     st.literal_int = is_int;
     st.literal_value = negative ? -v : v;
-    b_.stmts.push_back(st);
     return true;
   }
 
   static bool isExtendedAddress(std::string_view name) {
     if (name.size() == 1) return name[0] != '$' && name[0] != '_';
-    static constexpr std::string_view kAddr[] = {
-        "CR",  "AR",    "TURN",  "DISR", "DISC", "OFFN", "DISCL", "DISRP", "FAD", "RPL",
-        "RND", "RNDM",  "CHF",   "CHR",  "SPOS", "SPOSA", "FRC",  "FRCM", "ANG", "AP",
-        "RP",  "DISPR", "I1",    "J1",   "K1",   "CT",   "SF",    "FA",   "POS", "POSA",
-        "ACC", "OVR",   "LIMS",  "MOVT", "PM",   "PR",   "STOLF", "DITS", "DITE", "SCC"};
-    for (auto a : kAddr)
-      if (a == name) return true;
-    return false;
+    switch (packName(name)) {
+      case packName("CR"): case packName("AR"): case packName("TURN"): case packName("DISR"):
+      case packName("DISC"): case packName("OFFN"): case packName("DISCL"):
+      case packName("DISRP"): case packName("FAD"): case packName("RPL"): case packName("RND"):
+      case packName("RNDM"): case packName("CHF"): case packName("CHR"): case packName("SPOS"):
+      case packName("SPOSA"): case packName("FRC"): case packName("FRCM"):
+      case packName("ANG"): case packName("AP"): case packName("RP"): case packName("DISPR"):
+      case packName("I1"): case packName("J1"): case packName("K1"): case packName("CT"):
+      case packName("SF"): case packName("FA"): case packName("POS"): case packName("POSA"):
+      case packName("ACC"): case packName("OVR"): case packName("LIMS"): case packName("MOVT"):
+      case packName("PM"): case packName("PR"): case packName("STOLF"): case packName("DITS"):
+      case packName("DITE"): case packName("SCC"):
+        return true;
+      default:
+        return false;
+    }
   }
 
   static Stmt wordStmt(std::string_view address, int col, bool equals) {
@@ -585,6 +684,20 @@ class Parser {
   void numericAddress(int col) {
     std::string_view address = std::string_view(s_).substr(i_, 1);
     ++i_;
+    // The common word (X10, G1, F1000, T1 D1): digits not followed by '=' and no R parameter;
+    // one scan decides it. Longer digit runs take the paths below, which report them.
+    if (address[0] != 'R') {
+      size_t j = i_;
+      while (j < s_.size() && isDigit(s_[j])) ++j;
+      size_t k = j;
+      while (k < s_.size() && (s_[k] == ' ' || s_[k] == '\t')) ++k;
+      const bool assignment =
+          k < s_.size() && s_[k] == '=' && !(k + 1 < s_.size() && s_[k + 1] == '=');
+      if (j - i_ <= 18 && !assignment) {
+        plainWord(address, col);
+        return;
+      }
+    }
     // R parameter assignment R1=..
     if (address == "R" && isDigit(peek())) {
       size_t start = i_;
@@ -634,17 +747,22 @@ class Parser {
       }
       i_ = save;
     }
+    plainWord(address, col);
+  }
+
+  // The common plain word (X10, G1, F1000, X-5.5) keeps its value in the statement: no node.
+  void plainWord(std::string_view address, int col) {
     bool negative = false;
     if (peek() == '-' || peek() == '+') negative = s_[i_++] == '-';
-    // The common plain word (X10, G1, F1000) keeps its value in the statement: no node.
-    Stmt st;
+    bool is_int = false;
+    const double v = scanNumber(is_int);
+    Stmt& st = b_.stmts.emplace_back();
     st.kind = StmtKind::Word;
     st.name = address;
     st.column = col;
     st.literal = true;
-    double v = scanNumber(st.literal_int);
+    st.literal_int = is_int;
     st.literal_value = negative ? -v : v;
-    b_.stmts.push_back(st);
     // A letter may follow directly (G1X10Y20); anything else must be a separator.
     if (isDigit(peek())) syntax("unexpected digit");
   }

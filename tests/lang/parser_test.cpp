@@ -475,6 +475,75 @@ TEST(Parser, BlockIsReusable) {
   EXPECT_EQ(wordValue(b, b.stmts[0]), 5);
 }
 
+// The parser has a fast path for blocks of plain address words (G1 X10 CR=5); it must make
+// exactly the statements the general path makes. A leading `CDON` (a bare name the fast path
+// does not take) sends the same words through the general path, so each block below is parsed
+// both ways and compared statement by statement (columns shifted by the 5 characters).
+struct Parsed {
+  int alarm = 0;
+  Block block;
+};
+Parsed parseOrAlarm(const std::string& text) {
+  Parsed r;
+  try {
+    parseBlock(text, 1, r.block);
+  } catch (const AlarmError& e) {
+    r.alarm = e.number();
+  }
+  return r;
+}
+
+void expectSameAsGeneralPath(const std::string& text) {
+  SCOPED_TRACE(text);
+  const Parsed fast = parseOrAlarm(text);
+  const Parsed general = parseOrAlarm("CDON " + text);
+  ASSERT_EQ(fast.alarm, general.alarm);
+  if (fast.alarm) return;
+  ASSERT_EQ(fast.block.stmts.size() + 1, general.block.stmts.size());
+  for (size_t i = 0; i < fast.block.stmts.size(); ++i) {
+    const Stmt& a = fast.block.stmts[i];
+    const Stmt& b = general.block.stmts[i + 1];
+    EXPECT_EQ(a.kind, b.kind);
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.ext, b.ext);
+    EXPECT_EQ(a.mode, b.mode);
+    EXPECT_EQ(a.has_equals, b.has_equals);
+    EXPECT_EQ(a.column + 5, b.column);
+    EXPECT_EQ(a.literal, b.literal);
+    if (a.literal && b.literal) {
+      EXPECT_EQ(a.literal_int, b.literal_int);
+      EXPECT_EQ(a.literal_value, b.literal_value);  // bit for bit: same conversion
+    }
+  }
+}
+
+TEST(Parser, PlainWordFastPathMatchesGeneralPath) {
+  for (const char* text :
+       {"G1 X10.5 Y-2 F1000", "G3 X100 Y10 CR=10", "G1X10Y-5.5Z+.5", "T1 D1", "M30", "X-.5",
+        "X.", "X-", "X+-5", "X1.2.3", "X10 =5", "M2=6", "I1=5", "R1=5", "R1 X5", "R-5",
+        "CR=1EX2", "X1EX2", "X10E5", "CR =10", "CR==10", "CR=10X5", "DISC=50 G41", "G1\tX1",
+        "X123456789012345678", "X1234567890123456789", "X0.1234567890123456", "CR=-.5",
+        "DISR=+5", "ABC=5", "G1 X1 Y2 Z3 A4", "X=10", "S1000 M3", "F.5", "G64 X1",
+        "G1 X10 CDON", "X10$P", "X10_A", "G1 X1 ;"}) {
+    expectSameAsGeneralPath(text);
+  }
+  // Random sequences of tokens: whatever the fast path takes, it must take the same way.
+  const char* tokens[] = {"X", "G", "CR", "R", "M", "I", "E", "EX", "=", "-", "+", ".",
+                          "1", "10", "5.25", " ", "\t", "0", "==", "(", "DISC", "Y", "F"};
+  unsigned seed = 12345;
+  for (int n = 0; n < 20000; ++n) {
+    seed = seed * 1103515245u + 12345u;
+    std::string text = (seed >> 16) % 2 ? "X" : "G";
+    const int count = static_cast<int>((seed >> 8) % 9);
+    for (int k = 0; k < count; ++k) {
+      seed = seed * 1103515245u + 12345u;
+      text += tokens[(seed >> 16) % (sizeof tokens / sizeof tokens[0])];
+    }
+    expectSameAsGeneralPath(text);
+    if (HasFailure()) break;
+  }
+}
+
 // ---- syntax errors ---------------------------------------------------------------------------
 
 TEST(Parser, SyntaxErrorsRaise12080) {
