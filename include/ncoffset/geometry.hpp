@@ -74,6 +74,10 @@ struct Affine {
   Mat3 linear;
   Vec3 offset;
   Vec3 apply(Vec3 p) const { return linear * p + offset; }
+  // Exactly the identity (no frame active, the usual case): the hot paths skip the products.
+  bool isIdentity() const {
+    return linear.m == Mat3::identity().m && offset.x == 0 && offset.y == 0 && offset.z == 0;
+  }
   Affine inverse() const {
     Mat3 inv = linear.inverse();
     return {inv, -1.0 * (inv * offset)};

@@ -366,7 +366,12 @@ void Interpreter::finishBlock() {
 
 void Interpreter::doMotion() {
   const bool suppress = words_.suppress_frames != 0;
-  const Affine frame = suppress ? Affine{} : act_;
+  static const Affine kNoFrame;
+  const Affine& frame = suppress ? kNoFrame : act_;
+  // Without a frame WCS = BCS: the products below are skipped (the usual case).
+  const bool plain = suppress || act_identity_;
+  auto toBcs = [&](const Vec3& p) { return plain ? p : frame.apply(p); };
+  auto wcsOf = [&](const Vec3& bcs) { return act_identity_ ? bcs : act_inverse_.apply(bcs); };
   // Programming system: the WCS, or the BCS when frames are suppressed (G53/G153/SUPA).
   const Vec3 from = suppress ? bcs_ : wcs_;
   Vec3 target = from;
@@ -387,7 +392,7 @@ void Interpreter::doMotion() {
   m.frame = frame;
   m.line = line_;
   m.file = file_;
-  m.start = suppress ? bcs_ : act_inverse_.apply(bcs_);
+  m.start = suppress ? bcs_ : wcsOf(bcs_);
   m.end = target;
   if (m.motion != Motion::G0) {
     if (modal_.feed <= 0)
@@ -402,11 +407,11 @@ void Interpreter::doMotion() {
             fmt::format("circle programming error: {} is not an interpolation parameter in the "
                         "active plane",
                         "IJK"[pa.applicate]));
-    Mat3 l = frame.linear;
+    const Mat3& l = frame.linear;
     Vec3 ea, eo;
     ea[pa.abscissa] = 1;
     eo[pa.ordinate] = 1;
-    if (std::fabs(norm(l * ea) - norm(l * eo)) > 1e-9)
+    if (!plain && std::fabs(norm(l * ea) - norm(l * eo)) > 1e-9)
       raise(alarm_no::kFrameNotAffine,
             "a circle under different scale factors of the plane axes is an ellipse, which is not "
             "modelled");
@@ -445,14 +450,19 @@ void Interpreter::doMotion() {
     // moves it after the selection (W1 2.1, spec §2.6).
     Vec3 full = toolOffset();
     Vec3 before = applied_offset_;
-    for (int k = 0; k < 3; ++k)
+    if (plain) {
       for (int i = 0; i < 3; ++i)
-        if (words_.axis[i] && std::fabs(frame.linear.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
-          applied_offset_[k] = full[k];
-    Vec3 moved = (frame.apply(target) + applied_offset_) - (bcs_ + before);
+        if (words_.axis[i]) applied_offset_[i] = full[i];
+    } else {
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i)
+          if (words_.axis[i] && std::fabs(frame.linear.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
+            applied_offset_[k] = full[k];
+    }
+    Vec3 moved = (toBcs(target) + applied_offset_) - (bcs_ + before);
     if (std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12 &&
         !words_.sar) {
-      wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
+      wcs_ = suppress ? wcsOf(bcs_) : target;
       return;  // zero-length block: no segment
     }
   }
@@ -471,7 +481,7 @@ void Interpreter::doMotion() {
   m.trc.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
   // Computed geometry must stay finite and within the machine's number range: a frame with a
   // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
-  Vec3 checks[] = {frame.apply(m.end) + applied_offset_, frame.apply(m.centre)};
+  Vec3 checks[] = {toBcs(m.end) + applied_offset_, toBcs(m.centre)};
   for (const Vec3& p : checks)
     for (int i = 0; i < 3; ++i)
       if (!std::isfinite(p[i]))
@@ -510,8 +520,8 @@ void Interpreter::doMotion() {
   }
   sar_.motion(m);
   if (auto end = sar_.takeEndOverride()) target = *end;  // implicit retraction end point
-  bcs_ = frame.apply(target);
-  wcs_ = suppress ? act_inverse_.apply(bcs_) : target;
+  bcs_ = toBcs(target);
+  wcs_ = suppress ? wcsOf(bcs_) : target;
 }
 
 void Interpreter::doFrameCommand() {
@@ -577,6 +587,7 @@ void Interpreter::doFrameCommand() {
 void Interpreter::updateActiveFrame() {
   act_ = ncoffset::chain(iframe_, pframe_).affine();
   act_inverse_ = act_.inverse();
+  act_identity_ = act_.isIdentity();
 }
 
 }  // namespace ncoffset::interp

@@ -161,6 +161,7 @@ class Interpreter final : public lang::Environment {
   Frame pframe_;
   Affine act_;
   Affine act_inverse_;
+  bool act_identity_ = true;  // act_ is exactly the identity: doMotion skips the products
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
   int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0, md_check_blocks_ = 0;

@@ -18,16 +18,18 @@ char* writeShortest(char* out, double v) {
     const double scaled = a * 1e6 + 0.5;  // < 1e15 + 0.5: exact enough to round
     const auto m = static_cast<unsigned long long>(scaled);
     const double back = static_cast<double>(m) / 1e6;
-    if ((v < 0 ? -back : back) == v) {
+    if (back == a) {  // the same as (v < 0 ? -back : back) == v
       if (v < 0) *out++ = '-';
-      out = std::to_chars(out, out + 20, m / 1000000).ptr;
+      // Integer part below 1e9: 32 bits.
+      out = std::to_chars(out, out + 10, static_cast<unsigned>(m / 1000000)).ptr;
       unsigned frac = static_cast<unsigned>(m % 1000000);
       if (frac) {
-        char digits[7] = {'.', '0', '0', '0', '0', '0', '0'};
-        int len = 7;
-        for (int i = 6; i >= 1; --i, frac /= 10) digits[i] = static_cast<char>('0' + frac % 10);
-        while (digits[len - 1] == '0') --len;
-        for (int i = 0; i < len; ++i) *out++ = digits[i];
+        *out++ = '.';
+        int digits = 6;
+        for (; frac % 10 == 0; frac /= 10) --digits;  // trailing zeros are not written
+        char* const end = out + digits;
+        for (char* q = end; q > out; frac /= 10) *--q = static_cast<char>('0' + frac % 10);
+        out = end;
       }
       return out;
     }

@@ -8,6 +8,11 @@
 
 namespace ncoffset::out {
 
+namespace {
+// The longest CSV row: a line number (11), motion (2), 7 numbers of at most 32 characters
+// (writeShortest), 8 commas and the newline.
+constexpr size_t kMaxRow = 320;
+}  // namespace
 
 void appendJsonString(fmt::memory_buffer& b, std::string_view s) {
   b.push_back('"');
@@ -30,10 +35,13 @@ CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
 }
 
 void CsvWriter::segment(const Segment& s) {
-  // One row at a time into a local array (at most 9 fields of 32 characters), appended once.
-  char row[320];
-  fmt::format_int line(s.line);
-  char* p = std::copy(line.data(), line.data() + line.size(), row);
+  // Written in place at the end of the buffer: room for 9 fields of at most 32 characters is
+  // made first, the unused part is cut off after the row.
+  auto& b = w_.buf();
+  const size_t used = b.size();
+  b.resize(used + kMaxRow);
+  char* const row = b.data() + used;
+  char* p = fmt::format_to(row, FMT_COMPILE("{}"), s.line);
   const char* m = motionName(s.motion);
   *p++ = ',';
   *p++ = m[0];
@@ -55,7 +63,7 @@ void CsvWriter::segment(const Segment& s) {
   *p++ = ',';
   if (s.has_feed) p = writeShortest(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
   *p++ = '\n';
-  w_.buf().append(row, p);
+  b.resize(used + static_cast<size_t>(p - row));
   w_.lineDone();
 }
 

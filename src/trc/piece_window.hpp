@@ -14,8 +14,8 @@ class PieceWindow {
  public:
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
-  T& operator[](size_t i) { return slots_[(head_ + i) & (slots_.size() - 1)]; }
-  const T& operator[](size_t i) const { return slots_[(head_ + i) & (slots_.size() - 1)]; }
+  T& operator[](size_t i) { return slots_[(head_ + i) & mask_]; }
+  const T& operator[](size_t i) const { return slots_[(head_ + i) & mask_]; }
   T& front() { return (*this)[0]; }
   T& back() { return (*this)[size_ - 1]; }
   // A slot at the back to fill (it may hold an old element: the caller assigns all of it).
@@ -25,7 +25,7 @@ class PieceWindow {
     return back();
   }
   void popFront() {
-    head_ = (head_ + 1) & (slots_.size() - 1);
+    head_ = (head_ + 1) & mask_;
     --size_;
   }
   // Keeps the first n elements.
@@ -38,10 +38,12 @@ class PieceWindow {
     std::vector<T> bigger(slots_.empty() ? 8 : slots_.size() * 2);
     for (size_t i = 0; i < size_; ++i) bigger[i] = std::move((*this)[i]);
     slots_ = std::move(bigger);
+    mask_ = slots_.size() - 1;
     head_ = 0;
   }
 
   std::vector<T> slots_;
+  size_t mask_ = 0;  // slots_.size() - 1 (a Piece's size is no power of two: no division)
   size_t head_ = 0, size_ = 0;
 };
 

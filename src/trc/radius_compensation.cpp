@@ -476,6 +476,27 @@ void RadiusCompensation::transition(std::vector<MotionBlock>& out, const MotionB
   out.push_back(tb_block);
 }
 
+std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(const Piece& c,
+                                                                 const Element& target,
+                                                                 bool extension,
+                                                                 const Element& later,
+                                                                 double side) {
+  std::optional<geom::Crossing> best;
+  for (const auto& x : geom::intersect(target, later)) {
+    const bool on_target =
+        extension ? (!target.arc ? x.u1 > -kEps : true) : x.u1 > kEps && x.u1 < 1 - 1e-9;
+    if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) continue;
+    // Like an inside corner: the later element turns towards the compensation side.
+    // (With an extension the approach becomes the straight line to the point.)
+    const Vec2 t1 = extension    ? unit(x.p - c.compensated.p0)
+                    : target.arc ? geom::tangentAt(target, x.p)
+                                 : unit(target.p1 - target.p0);
+    if (side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9) continue;
+    if (!best || x.u2 < best->u2) best = x;
+  }
+  return best;
+}
+
 void RadiusCompensation::bridge(Piece& next) {
   // `next` is the window's last element.
   bool needed = false;
@@ -487,7 +508,11 @@ void RadiusCompensation::bridge(Piece& next) {
   // CDOF stops at the first intersection found, CDON keeps searching and takes the last found
   // (W1 2.4.8, details Q5).
   const long oldest = next.index - settings_.check_blocks;
-  const Element later = cornerEquidistant(next, false);
+  // The later element at its start value (details Q8); with a constant value it is the piece
+  // itself, with its box (no copy).
+  Element changed;
+  if (next.r0 != next.r1) changed = cornerEquidistant(next, false);
+  const Element& later = next.r0 == next.r1 ? next.compensated : changed;
   const geom::Box later_box = next.r0 == next.r1 ? next.box : geom::Box(later);
   std::optional<std::pair<size_t, Vec2>> found;
   for (size_t j = window_.size() - 2; j-- > 0;) {
@@ -497,36 +522,19 @@ void RadiusCompensation::bridge(Piece& next) {
     // The element itself, then for an approach line with G461 a circle of the tool radius about
     // the end point of the uncompensated approach block, with G462 the line's extension; both
     // only to find an intersection (W1 2.4.10, details Q7).
-    Element extension_element;
-    int n_targets = 1;
-    if (c.approach && c.strategy == 461) {
-      extension_element = fullCircle(c.programmed.p1, std::fabs(next.r0));
-      ++n_targets;
-    } else if (c.approach && c.strategy == 462) {
-      // G462: the first element's equidistant extended backwards from the approach point along
-      // its start tangent, the mirror image of the retraction's extension (details Q7).
-      extension_element.p0 = c.compensated.p1;
-      extension_element.p1 = c.compensated.p1 - c.first_tangent;
-      ++n_targets;
-    }
     std::optional<geom::Crossing> best;
-    for (int k = 0; k < n_targets; ++k) {
-      const bool extension = k > 0;
-      const Element& target = extension ? extension_element : c.compensated;
-      if (!extension && !c.box.overlaps(later_box)) continue;
-      for (const auto& x : geom::intersect(target, later)) {
-        const bool on_target = extension ? (!target.arc ? x.u1 > -kEps : true)
-                                         : x.u1 > kEps && x.u1 < 1 - 1e-9;
-        if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) continue;
-        // Like an inside corner: the later element turns towards the compensation side.
-        // (With an extension the approach becomes the straight line to the point.)
-        const Vec2 t1 = extension ? unit(x.p - c.compensated.p0)
-                        : target.arc ? geom::tangentAt(target, x.p)
-                                     : unit(target.p1 - target.p0);
-        if (next.side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9) continue;
-        if (!best || x.u2 < best->u2) best = x;
+    if (c.box.overlaps(later_box)) best = bridgeCrossing(c, c.compensated, false, later, next.side);
+    if (!best && c.approach && (c.strategy == 461 || c.strategy == 462)) {
+      Element extension;
+      if (c.strategy == 461) {
+        extension = fullCircle(c.programmed.p1, std::fabs(next.r0));
+      } else {
+        // G462: the first element's equidistant extended backwards from the approach point
+        // along its start tangent, the mirror image of the retraction's extension (details Q7).
+        extension.p0 = c.compensated.p1;
+        extension.p1 = c.compensated.p1 - c.first_tangent;
       }
-      if (best) break;
+      best = bridgeCrossing(c, extension, true, later, next.side);
     }
     if (!best) continue;
     found = {j, best->p};

@@ -86,6 +86,11 @@ class RadiusCompensation {
                   double s, double disc, double app0, double app1) const;
   // Bottleneck detection: intersects `next` with earlier elements of the window.
   void bridge(Piece& next);
+  // The crossing of `later` with `target` (element `c` itself, or with `extension` its G461/G462
+  // extension) where a bridge may start: nearest the start of `later`, turning to `side`.
+  static std::optional<geom::Crossing> bridgeCrossing(const Piece& c, const geom::Element& target,
+                                                      bool extension, const geom::Element& later,
+                                                      double side);
   // Omits the window's elements after position `keep` (but the last one if `keep_last`); `at`
   // is where their other actions run.
   void omitAfter(size_t keep, geom::Vec2 at, bool keep_last);
