@@ -81,7 +81,7 @@ void Interpreter::collectWord(const Stmt& st) {
       }
       case 'G': {
         double g = value();
-        if (g < 0 || g != std::floor(g) || g > 9999)
+        if (!(g >= 0 && g <= 9999) || static_cast<int>(g) != g)  // also NaN
           raise(alarm_no::kUnknownGCode, fmt::format("G function G{} is unknown", g));
         gCode(static_cast<int>(g));
         return;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 #include "lang/block.hpp"
 #include "ncoffset/geometry.hpp"
@@ -70,7 +71,14 @@ struct BlockWords {
   bool discl_ac = false, disrp_ac = false;
   int column = 0;
 
-  void clear() { *this = BlockWords(); }
+  void clear();
 };
+// All members are plain values: a copy of one empty instance clears a block's words (cheaper
+// than constructing a new one for every block).
+static_assert(std::is_trivially_copyable_v<BlockWords>);
+inline void BlockWords::clear() {
+  static const BlockWords kEmpty;
+  *this = kEmpty;
+}
 
 }  // namespace ncoffset::interp

@@ -1030,15 +1030,26 @@ bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
   constexpr std::uint64_t kOnes = 0x0101010101010101ULL, kHigh = 0x8080808080808080ULL;
   auto hasLess = [](std::uint64_t x, unsigned n) { return (x - kOnes * n) & ~x & kHigh; };
   auto hasZero = [](std::uint64_t x) { return (x - kOnes) & ~x & kHigh; };
+  auto plain = [&](size_t at, std::uint64_t& w) {
+    std::memcpy(&w, text.data() + at, 8);
+    return !(hasLess(w, 0x20) || ((w + kOnes * (0x80 - 0x60)) | w) & kHigh ||
+             hasZero(w ^ (kOnes * ';')) || hasZero(w ^ (kOnes * '"')));
+  };
   while (k + 8 <= n) {
     std::uint64_t w;
-    std::memcpy(&w, text.data() + k, 8);
-    if (hasLess(w, 0x20) || ((w + kOnes * (0x80 - 0x60)) | w) & kHigh ||
-        hasZero(w ^ (kOnes * ';')) || hasZero(w ^ (kOnes * '"')))
-      break;
+    if (!plain(k, w)) break;
     std::memcpy(dst, &w, 8);
     dst += 8;
     k += 8;
+  }
+  // The rest of a plain line as one more (overlapping) group of eight.
+  if (k < n && n >= 8 && k + 8 > n) {
+    std::uint64_t w;
+    if (plain(n - 8, w)) {
+      std::memcpy(out.data() + (n - 8), &w, 8);
+      out.resize(n);
+      return true;
+    }
   }
   while (k < n) {
     auto c = static_cast<unsigned char>(text[k]);

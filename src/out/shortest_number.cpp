@@ -15,6 +15,12 @@ char* writeShortest(char* out, double v) {
   // than n / 1e6 with its trailing zeros removed, and that text reads back as n / 1e6 = v
   // (the division is correctly rounded, as is reading the text).
   if (a < 1e9 && (a >= 1e-4 || a == 0)) {
+    // Whole numbers (feeds, levels, many programmed points) need no fraction at all.
+    const auto whole = static_cast<unsigned>(a);  // a < 1e9 < 2^32
+    if (static_cast<double>(whole) == a) {
+      if (v < 0) *out++ = '-';
+      return std::to_chars(out, out + 10, whole).ptr;
+    }
     const double scaled = a * 1e6 + 0.5;  // < 1e15 + 0.5: exact enough to round
     const auto m = static_cast<unsigned long long>(scaled);
     const double back = static_cast<double>(m) / 1e6;

@@ -83,6 +83,35 @@ TEST(NormalizeLine, BadBytesOutsideCommentsAndStrings) {
   EXPECT_EQ(out, "G1 X1 ");
 }
 
+// normalizeLine copies plain text eight bytes at a time (the last group overlapping) and
+// everything else byte by byte; shifting a line by k blanks moves every character across those
+// groups, and must shift the result (or the bad column) by k and change nothing else.
+TEST(NormalizeLine, SameResultAtEveryAlignment) {
+  const std::string base = "G1 X10.5 Y-2 CR=10 F1000";
+  const char specials[] = {';', 'a', '"', '\t', '\x01', '\xE4', 'z', '\r'};
+  for (size_t len = 1; len <= base.size(); ++len) {
+    for (size_t at = 0; at <= len; ++at) {
+      for (char special : specials) {
+        std::string text = base.substr(0, len);
+        if (at < len) text[at] = special;
+        std::string expected;
+        int expected_bad = 0;
+        const bool expected_ok = normalizeLine(text, expected, &expected_bad);
+        for (size_t k = 1; k <= 9; ++k) {
+          std::string out;
+          int bad = 0;
+          const bool ok = normalizeLine(std::string(k, ' ') + text, out, &bad);
+          ASSERT_EQ(ok, expected_ok) << text << " shifted by " << k;
+          if (ok)
+            EXPECT_EQ(out, std::string(k, ' ') + expected) << text << " shifted by " << k;
+          else
+            EXPECT_EQ(bad, expected_bad + static_cast<int>(k)) << text << " shifted by " << k;
+        }
+      }
+    }
+  }
+}
+
 TEST(Parser, BadCharacterRaises99011) {
   EXPECT_EQ(parseAlarm("G1 X\xE4"), alarm_no::kBadCharacter);
   EXPECT_EQ(parseAlarm("G1 X1 ; \xE4"), 0);
