@@ -9,7 +9,11 @@
 namespace ncoffset::geom {
 namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
-double dist(Vec2 p, Vec2 q) { return std::hypot(q.a - p.a, q.o - p.o); }
+// Coordinates stay within 1e9 mm (block_executor): the squares cannot overflow, no hypot needed.
+double dist(Vec2 p, Vec2 q) {
+  const double a = q.a - p.a, o = q.o - p.o;
+  return std::sqrt(a * a + o * o);
+}
 }  // namespace
 
 ArcSolution solveArc(const ArcRequest& r) {

@@ -93,7 +93,8 @@ struct Block {
   std::vector<Node> nodes;
   std::vector<int> args;
   std::vector<Decl> decls;
-  std::string buffer;         // upper-cased copy of the line that the views point into
+  std::string buffer;         // upper-cased copy of the line that the views point into (it
+                              // only grows: the line is its beginning, ended by a '\0')
 
   void clear() {
     line = 0;

@@ -56,7 +56,9 @@ constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8
 
 class Parser {
  public:
-  Parser(Block& b, const ParseLimits& limits) : b_(b), s_(b.buffer), limits_(limits) {}
+  // `text`: the normalised block, followed by a '\0' (see normalizeInto).
+  Parser(Block& b, std::string_view text, const ParseLimits& limits)
+      : b_(b), s_(text), limits_(limits) {}
 
   void parse() {
     skipSpaces();
@@ -92,7 +94,7 @@ class Parser {
 
  private:
   Block& b_;
-  const std::string& s_;
+  const std::string_view s_;
   const ParseLimits& limits_;
   size_t i_ = 0;
   int depth_ = 0;
@@ -104,7 +106,7 @@ class Parser {
   int column() const { return static_cast<int>(i_) + 1; }
 
   [[noreturn]] void syntax(const std::string& what) const {
-    std::string near = s_.substr(i_ < s_.size() ? i_ : s_.size(), 24);
+    std::string near(s_.substr(i_ < s_.size() ? i_ : s_.size(), 24));
     raise(alarm_no::kSyntaxError, "syntax error in text at column " + std::to_string(column()) +
                                       (near.empty() ? std::string(" (end of block)")
                                                     : " near '" + near + "'") +
@@ -212,9 +214,9 @@ class Parser {
   // thing it does not know it drops what it made and returns false, and the general path parses
   // the block from the same position (and reports any error).
   bool simpleWords() {
-    // The buffer is a std::string: a '\0' follows its last character (normalizeLine lets no
-    // other '\0' through), which ends every scan below without a length check.
-    const char* const base = s_.c_str();
+    // A '\0' follows the block's last character (normalizeInto lets no other '\0' through),
+    // which ends every scan below without a length check.
+    const char* const base = s_.data();
     const char* p = base + i_;
     const size_t first = b_.stmts.size();
     auto isBlank = [](char c) { return c == ' ' || c == '\t'; };
@@ -1021,10 +1023,16 @@ struct ByteTable {
 constexpr ByteTable kBytes;
 }  // namespace
 
-bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
-  out.resize(text.size());
-  char* dst = out.data();
+namespace {
+// normalizeLine into `out` without shrinking it (a std::string that only grows is resized once,
+// not for every block): sets `len` to the normalised length (up to a bad byte, for which it
+// returns false) and, when it succeeds, puts a '\0' after it, which the parser's fast path
+// relies on.
+bool normalizeInto(std::string_view text, std::string& out, size_t& len, int* bad_column) {
   const size_t n = text.size();
+  if (out.size() < n + 1) out.resize(n + 1);
+  char* const begin = out.data();
+  char* dst = begin;
   size_t k = 0;
   // Eight bytes at a time while they are plain upper-case text (0x20..0x5F, no ';' or '"').
   constexpr std::uint64_t kOnes = 0x0101010101010101ULL, kHigh = 0x8080808080808080ULL;
@@ -1046,8 +1054,9 @@ bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
   if (k < n && n >= 8 && k + 8 > n) {
     std::uint64_t w;
     if (plain(n - 8, w)) {
-      std::memcpy(out.data() + (n - 8), &w, 8);
-      out.resize(n);
+      std::memcpy(begin + (n - 8), &w, 8);
+      begin[n] = '\0';
+      len = n;
       return true;
     }
   }
@@ -1063,7 +1072,7 @@ bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
         while (k < n && text[k] != '"') {
           if (text[k] == '\0') {
             if (bad_column) *bad_column = static_cast<int>(k) + 1;
-            out.resize(static_cast<size_t>(dst - out.data()));
+            len = static_cast<size_t>(dst - begin);
             return false;
           }
           *dst++ = text[k++];
@@ -1073,19 +1082,29 @@ bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
       }
       default:
         if (bad_column) *bad_column = static_cast<int>(k) + 1;
-        out.resize(static_cast<size_t>(dst - out.data()));
+        len = static_cast<size_t>(dst - begin);
         return false;
     }
   }
-  out.resize(static_cast<size_t>(dst - out.data()));
+  *dst = '\0';
+  len = static_cast<size_t>(dst - begin);
   return true;
+}
+}  // namespace
+
+bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
+  size_t len = 0;
+  const bool ok = normalizeInto(text, out, len, bad_column);
+  out.resize(len);
+  return ok;
 }
 
 void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& limits) {
   out.clear();
   out.line = line;
   int bad = 0;
-  if (!normalizeLine(text, out.buffer, &bad)) {
+  size_t len = 0;
+  if (!normalizeInto(text, out.buffer, len, &bad)) {
     unsigned char c = static_cast<unsigned char>(text[static_cast<size_t>(bad - 1)]);
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", c);
@@ -1093,7 +1112,7 @@ void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& 
                                        std::to_string(bad) +
                                        " is not allowed outside comments and strings");
   }
-  Parser p(out, limits);
+  Parser p(out, std::string_view(out.buffer.data(), len), limits);
   p.parse();
 }
 

@@ -344,8 +344,11 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       next.restart = next.restart || restart_next_;
       restart_next_ = false;
       connect(window_[window_.size() - 2], next);
-      bridge(next);
-      checkOpen(count_ + 1);
+      // Bottleneck detection closes junctions, never opens one: with none open before it,
+      // there is nothing for checkOpen to find.
+      const bool open = anyOpen();
+      bridge(next, open);
+      if (open) checkOpen(count_ + 1);
       release();
       dummy_blocks_ = 0;
       return;
@@ -497,11 +500,14 @@ std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(const Piece& c,
   return best;
 }
 
-void RadiusCompensation::bridge(Piece& next) {
-  // `next` is the window's last element.
-  bool needed = false;
+bool RadiusCompensation::anyOpen() const {
   for (size_t i = 0; i < window_.size(); ++i)
-    needed = needed || window_[i].open_before || !window_[i].valid;
+    if (window_[i].open_before || !window_[i].valid) return true;
+  return false;
+}
+
+void RadiusCompensation::bridge(Piece& next, bool needed) {
+  // `next` is the window's last element.
   if (!next.valid || window_.size() < 3 || (!needed && settings_.collision != CollisionCheck::Cdon))
     return;
   // Search back from the element before the last one (the last one was tried as the corner);

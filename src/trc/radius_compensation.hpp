@@ -84,8 +84,11 @@ class RadiusCompensation {
   void transition(std::vector<place::MotionBlock>& out, const place::MotionBlock& like,
                   geom::Vec2 a, geom::Vec2 ta, geom::Vec2 b, geom::Vec2 tb, geom::Vec2 p,
                   double s, double disc, double app0, double app1) const;
-  // Bottleneck detection: intersects `next` with earlier elements of the window.
-  void bridge(Piece& next);
+  // A junction of the window without intersection, or an element without equidistant.
+  bool anyOpen() const;
+  // Bottleneck detection: intersects `next` with earlier elements of the window; `needed`:
+  // anyOpen() (CDOF searches only then, CDON always).
+  void bridge(Piece& next, bool needed);
   // The crossing of `later` with `target` (element `c` itself, or with `extension` its G461/G462
   // extension) where a bridge may start: nearest the start of `later`, turning to `side`.
   static std::optional<geom::Crossing> bridgeCrossing(const Piece& c, const geom::Element& target,
