@@ -4,8 +4,16 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 namespace ncoffset::out {
+namespace {
+// "00" "01" ... "99": two digits at a time.
+constexpr char kPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+}  // namespace
 
 char* writeShortest(char* out, double v) {
   v += 0.0;  // -0 prints as 0
@@ -28,14 +36,15 @@ char* writeShortest(char* out, double v) {
       if (v < 0) *out++ = '-';
       // Integer part below 1e9: 32 bits.
       out = std::to_chars(out, out + 10, static_cast<unsigned>(m / 1000000)).ptr;
-      unsigned frac = static_cast<unsigned>(m % 1000000);
+      const auto frac = static_cast<unsigned>(m % 1000000);
       if (frac) {
+        // Six digits as three pairs, then the trailing zeros cut off.
         *out++ = '.';
-        int digits = 6;
-        for (; frac % 10 == 0; frac /= 10) --digits;  // trailing zeros are not written
-        char* const end = out + digits;
-        for (char* q = end; q > out; frac /= 10) *--q = static_cast<char>('0' + frac % 10);
-        out = end;
+        std::memcpy(out, kPairs + 2 * (frac / 10000), 2);
+        std::memcpy(out + 2, kPairs + 2 * (frac / 100 % 100), 2);
+        std::memcpy(out + 4, kPairs + 2 * (frac % 100), 2);
+        out += 6;
+        while (out[-1] == '0') --out;  // frac > 0: stops at a non-zero digit
       }
       return out;
     }

@@ -1,8 +1,6 @@
 #include "out/writers.hpp"
 
-#include <fmt/compile.h>
-
-#include <algorithm>
+#include <charconv>
 
 #include "out/shortest_number.hpp"
 
@@ -41,19 +39,19 @@ void CsvWriter::segment(const Segment& s) {
   const size_t used = b.size();
   b.resize(used + kMaxRow);
   char* const row = b.data() + used;
-  char* p = fmt::format_to(row, FMT_COMPILE("{}"), s.line);
+  char* p = std::to_chars(row, row + 11, s.line).ptr;
   const char* m = motionName(s.motion);
   *p++ = ',';
   *p++ = m[0];
   *p++ = m[1];
   for (double v : {s.end.x, s.end.y, s.end.z}) {
     *p++ = ',';
-    p = writeShortest(p, v);
+    p = writeShortestInline(p, v);
   }
   if (s.motion == Motion::G2 || s.motion == Motion::G3) {
     for (double v : {s.centre.x, s.centre.y, s.centre.z}) {
       *p++ = ',';
-      p = writeShortest(p, v);
+      p = writeShortestInline(p, v);
     }
   } else {
     *p++ = ',';
@@ -61,7 +59,7 @@ void CsvWriter::segment(const Segment& s) {
     *p++ = ',';
   }
   *p++ = ',';
-  if (s.has_feed) p = writeShortest(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
+  if (s.has_feed) p = writeShortestInline(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
   *p++ = '\n';
   b.resize(used + static_cast<size_t>(p - row));
   w_.lineDone();

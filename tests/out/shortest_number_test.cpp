@@ -20,12 +20,22 @@ std::string viaFast(double v) {
 
 std::string viaFmt(double v) { return fmt::format("{}", v + 0.0); }
 
+// The inline variant (whole numbers without a call) must write the same text.
+std::string viaInline(double v) {
+  char text[32];
+  return std::string(text, writeShortestInline(text, v));
+}
+
 TEST(ShortestNumber, SameTextAsFmtForTypicalValues) {
   for (double v : {0.0, -0.0, 1.0, -1.0, 0.5, 10.25, 41.33974596215561, 15.527864045000421,
                    3.944271909999159, 0.1, 0.2, 0.3, 1e-4, 9.9999e-5, 1e-5, 123456.789012,
                    999999999.999999, 1e9, -1e9, 1e15, 1e16, 1e300, 5e-324, 0.000125, 7.000001,
-                   -2.5e-4, 100000000.0, 12345678.9, 0.1 + 0.2})
+                   -2.5e-4, 100000000.0, 12345678.9, 0.1 + 0.2, 999999999.0, -999999999.0,
+                   4294967296.0, 1e10, -7.0, 0.99999999999})
     EXPECT_EQ(viaFast(v), viaFmt(v)) << v;
+  for (double v : {0.0, -0.0, 1.0, -1.0, 96.0, -20.0, 1000.0, 999999999.0, -999999999.0, 1e9,
+                   4294967296.0, 1e10, 10.25, -0.5, std::nan(""), 1e300})
+    EXPECT_EQ(viaInline(v), viaFmt(v)) << v;
 }
 
 TEST(ShortestNumber, SameTextAsFmtForRandomValues) {
@@ -39,6 +49,7 @@ TEST(ShortestNumber, SameTextAsFmtForRandomValues) {
     // Values with few decimals (the fast path) and their neighbours (not on it).
     double d = static_cast<double>(micro(rng)) / std::pow(10.0, decimals(rng));
     ASSERT_EQ(viaFast(d), viaFmt(d)) << d;
+    ASSERT_EQ(viaInline(d), viaFmt(d)) << d;
     double n = std::nextafter(d, 1e300);
     ASSERT_EQ(viaFast(n), viaFmt(n)) << n;
   }
