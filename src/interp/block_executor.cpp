@@ -390,6 +390,7 @@ void Interpreter::doMotion() {
   // A SAR block is a linear block: its own G0/G1 (G2/G3 modal count as G1) moves P2 -> P0.
   if (words_.sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
   m.frame = frame;
+  m.frame_serial = suppress ? 0 : act_serial_;
   m.line = line_;
   m.file = file_;
   m.start = suppress ? bcs_ : wcsOf(bcs_);
@@ -483,12 +484,13 @@ void Interpreter::doMotion() {
   // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
   Vec3 checks[] = {toBcs(m.end) + applied_offset_, toBcs(m.centre)};
   for (const Vec3& p : checks)
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
+      if (std::fabs(p[i]) <= 1e9) continue;  // the usual case: one comparison (false for NaN)
       if (!std::isfinite(p[i]))
         raise(alarm_no::kArithmetic, "arithmetic error in part program: position is not a finite number");
-      else if (std::fabs(p[i]) > 1e9)
-        raise(alarm_no::kValueRange,
-              fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i], "XYZ"[i]));
+      raise(alarm_no::kValueRange,
+            fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i], "XYZ"[i]));
+    }
   block_moved_ = true;
   if (words_.sar) {
     sar_request_ = SarRequest{};
@@ -588,6 +590,7 @@ void Interpreter::updateActiveFrame() {
   act_ = ncoffset::chain(iframe_, pframe_).affine();
   act_inverse_ = act_.inverse();
   act_identity_ = act_.isIdentity();
+  ++act_serial_;
 }
 
 }  // namespace ncoffset::interp

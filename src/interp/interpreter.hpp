@@ -162,6 +162,7 @@ class Interpreter final : public lang::Environment {
   Affine act_;
   Affine act_inverse_;
   bool act_identity_ = true;  // act_ is exactly the identity: doMotion skips the products
+  unsigned long long act_serial_ = 1;  // counts the changes of act_ (MotionBlock::frame_serial)
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
   int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0, md_check_blocks_ = 0;

@@ -63,8 +63,6 @@ void Placement::warning(const MotionBlock& m, int number, const std::string& tex
   sink_.warning({file_name_ ? file_name_(m.file) : kUnknown, m.line}, number, text);
 }
 
-void Placement::programmed(const MotionBlock& m) {
-  if (wants_programmed_) sink_.programmed(toSegment(m));
-}
+void Placement::programmedSegment(const MotionBlock& m) { sink_.programmed(toSegment(m)); }
 
 }  // namespace ncoffset::place

@@ -24,6 +24,9 @@ struct MotionBlock {
   TrcSettings trc;    // radius compensation of this block
   int turns = 0;
   Affine frame;  // WCS -> BCS for this block (identity with G53/G153/SUPA and programmed MCS)
+  // Blocks with the same serial have the same frame (the interpreter counts its frame changes;
+  // 0: frames suppressed): saves comparing frames where they are the same, as they usually are.
+  unsigned long long frame_serial = 0;
   Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
   double feed = 0;
   bool has_feed = false;
@@ -55,11 +58,14 @@ class Placement {
   };
   void motion(const MotionBlock& like, const Geometry& g);
   // The programmed motion of a block, for sinks that draw the contour (PathSink::programmed).
-  void programmed(const MotionBlock& m);
+  void programmed(const MotionBlock& m) {
+    if (wants_programmed_) programmedSegment(m);
+  }
   // A warning of the compensation stage (not interrupting).
   void warning(const MotionBlock& m, int number, const std::string& text);
 
  private:
+  void programmedSegment(const MotionBlock& m);
   Segment toSegment(const MotionBlock& m) const;
   Segment toSegment(const MotionBlock& m, const Geometry& g) const;
 

@@ -82,13 +82,6 @@ Element fullCircle(Vec2 c, double r) {
 
 }  // namespace
 
-double RadiusCompensation::sideOf(const TrcSettings& t) const {
-  // G41: left of the direction of travel; a negative compensation value changes the side
-  // (PM-NC p256).
-  double s = t.mode == 41 ? 1.0 : -1.0;
-  return t.radius < 0 ? -s : s;
-}
-
 Element RadiusCompensation::toElement(const MotionBlock& m) const {
   PlaneAxes pa = planeAxes(m.plane);
   Element e;
@@ -232,7 +225,7 @@ void RadiusCompensation::emitPiece(const Piece& p) {
 void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
   if (m.plane != selection_.plane)
     raise(10757, "change of compensation plane not possible while tool radius compensation is active");
-  if (!sameAffine(m.frame, selection_.frame))
+  if (m.frame_serial != selection_.frame_serial && !sameAffine(m.frame, selection_.frame))
     notModelled("a frame change while compensation is active");
 }
 

@@ -108,7 +108,12 @@ class RadiusCompensation {
   void retract(const place::MotionBlock& m);
   void checkSameSettings(const place::MotionBlock& m) const;
   bool planeMotion(const place::MotionBlock& m) const;
-  double sideOf(const TrcSettings& t) const;  // +1: compensated to the left of travel
+  // +1: compensated to the left of travel. G41: left of the direction of travel; a negative
+  // compensation value changes the side (PM-NC p256).
+  static double sideOf(const TrcSettings& t) {
+    const double s = t.mode == 41 ? 1.0 : -1.0;
+    return t.radius < 0 ? -s : s;
+  }
   double side() const { return sideOf(settings_); }
 
   place::Placement& out_;
