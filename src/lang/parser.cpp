@@ -266,8 +266,9 @@ class Parser {
           return give_up();
         if (*next == '=' || (*word == 'R' && isDigit(word[1]))) return give_up();
       }
-      const double v = static_cast<double>(mant) / kPow10[decimals];
-      Stmt& st = b_.stmts.emplace_back();
+      // At most 15 digits: the mantissa converts exactly, as a signed number (one instruction).
+      const double v = static_cast<double>(static_cast<long long>(mant)) / kPow10[decimals];
+      Stmt st;
       st.kind = StmtKind::Word;
       st.name = name;
       st.column = static_cast<int>(word - base) + 1;
@@ -275,6 +276,7 @@ class Parser {
       st.literal = true;
       st.literal_int = is_int;
       st.literal_value = negative ? -v : v;
+      b_.stmts.push_back(st);
       p = next;
     }
     i_ = s_.size();
