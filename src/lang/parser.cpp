@@ -266,8 +266,10 @@ class Parser {
           return give_up();
         if (*next == '=' || (*word == 'R' && isDigit(word[1]))) return give_up();
       }
-      // At most 15 digits: the mantissa converts exactly, as a signed number (one instruction).
-      const double v = static_cast<double>(static_cast<long long>(mant)) / kPow10[decimals];
+      // At most 15 digits: the mantissa converts exactly, as a signed number (one instruction);
+      // whole numbers need no division.
+      const auto whole = static_cast<double>(static_cast<long long>(mant));
+      const double v = decimals == 0 ? whole : whole / kPow10[decimals];
       Stmt st;
       st.kind = StmtKind::Word;
       st.name = name;
