@@ -7,13 +7,6 @@
 #include <cstring>
 
 namespace ncoffset::out {
-namespace {
-// "00" "01" ... "99": two digits at a time.
-constexpr char kPairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-}  // namespace
 
 char* writeShortest(char* out, double v) {
   v += 0.0;  // -0 prints as 0
@@ -27,7 +20,7 @@ char* writeShortest(char* out, double v) {
     const auto whole = static_cast<unsigned>(a);  // a < 1e9 < 2^32
     if (static_cast<double>(whole) == a) {
       if (v < 0) *out++ = '-';
-      return std::to_chars(out, out + 10, whole).ptr;
+      return writeUnsigned(out, whole);
     }
     const double scaled = a * 1e6 + 0.5;  // < 1e15 + 0.5: exact enough to round
     const auto m = static_cast<unsigned long long>(scaled);
@@ -35,14 +28,14 @@ char* writeShortest(char* out, double v) {
     if (back == a) {  // the same as (v < 0 ? -back : back) == v
       if (v < 0) *out++ = '-';
       // Integer part below 1e9: 32 bits.
-      out = std::to_chars(out, out + 10, static_cast<unsigned>(m / 1000000)).ptr;
+      out = writeUnsigned(out, static_cast<unsigned>(m / 1000000));
       const auto frac = static_cast<unsigned>(m % 1000000);
       if (frac) {
         // Six digits as three pairs, then the trailing zeros cut off.
         *out++ = '.';
-        std::memcpy(out, kPairs + 2 * (frac / 10000), 2);
-        std::memcpy(out + 2, kPairs + 2 * (frac / 100 % 100), 2);
-        std::memcpy(out + 4, kPairs + 2 * (frac % 100), 2);
+        std::memcpy(out, kDigitPairs + 2 * (frac / 10000), 2);
+        std::memcpy(out + 2, kDigitPairs + 2 * (frac / 100 % 100), 2);
+        std::memcpy(out + 4, kDigitPairs + 2 * (frac % 100), 2);
         out += 6;
         while (out[-1] == '0') --out;  // frac > 0: stops at a non-zero digit
       }

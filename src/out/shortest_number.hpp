@@ -7,8 +7,40 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cstring>
 
 namespace ncoffset::out {
+
+// "00" "01" ... "99": decimal digits two at a time.
+inline constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+// Writes v in decimal and returns the end; values below 10000 (most coordinates, line numbers
+// and feeds) without a loop.
+inline char* writeUnsigned(char* out, unsigned v) {
+  if (v < 100) {
+    if (v < 10) {
+      *out = static_cast<char>('0' + v);
+      return out + 1;
+    }
+    std::memcpy(out, kDigitPairs + 2 * v, 2);
+    return out + 2;
+  }
+  if (v < 10000) {
+    const unsigned hi = v / 100, lo = v % 100;
+    if (hi < 10) {
+      *out++ = static_cast<char>('0' + hi);
+    } else {
+      std::memcpy(out, kDigitPairs + 2 * hi, 2);
+      out += 2;
+    }
+    std::memcpy(out, kDigitPairs + 2 * lo, 2);
+    return out + 2;
+  }
+  return std::to_chars(out, out + 10, v).ptr;
+}
 
 // Writes v at `out` (room for 32 characters) and returns the end.
 char* writeShortest(char* out, double v);
@@ -21,7 +53,7 @@ inline char* writeShortestInline(char* out, double v) {
     const auto whole = static_cast<unsigned>(a);
     if (static_cast<double>(whole) == a) {
       if (v < 0 && whole != 0) *out++ = '-';  // -0 prints as 0
-      return std::to_chars(out, out + 10, whole).ptr;
+      return writeUnsigned(out, whole);
     }
   }
   return writeShortest(out, v);

@@ -39,7 +39,8 @@ void CsvWriter::segment(const Segment& s) {
   const size_t used = b.size();
   b.resize(used + kMaxRow);
   char* const row = b.data() + used;
-  char* p = std::to_chars(row, row + 11, s.line).ptr;
+  char* p = s.line >= 0 ? writeUnsigned(row, static_cast<unsigned>(s.line))
+                        : std::to_chars(row, row + 11, s.line).ptr;
   const char* m = motionName(s.motion);
   *p++ = ',';
   *p++ = m[0];

@@ -55,6 +55,14 @@ TEST(ShortestNumber, SameTextAsFmtForRandomValues) {
   }
 }
 
+TEST(ShortestNumber, UnsignedAsToString) {
+  char text[16];
+  for (unsigned v = 0; v < 100000; ++v)
+    ASSERT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
+  for (unsigned v : {999999u, 1000000u, 123456789u, 4294967295u})
+    EXPECT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
+}
+
 TEST(ShortestNumber, NonFiniteAsFmt) {
   EXPECT_EQ(viaFast(std::numeric_limits<double>::infinity()), viaFmt(std::numeric_limits<double>::infinity()));
   EXPECT_EQ(viaFast(std::nan("")), viaFmt(std::nan("")));
