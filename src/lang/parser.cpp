@@ -85,6 +85,27 @@ class Parser {
       }
     }
     if (simpleWords()) return;
+    generalStatements();
+  }
+
+  // parse() for a block as written (not normalised): only blocks the fast path takes entirely,
+  // with at most a block number N.. in front (no skip level, label or anything that could
+  // raise an alarm). False: nothing is decided, the block must be normalised and parsed.
+  bool parseWritten() {
+    skipSpaces();
+    if (peek() == 'N' && isDigit(peek(1))) {
+      size_t j = i_ + 1;
+      while (j < s_.size() && isDigit(s_[j])) ++j;
+      if (j - i_ - 1 > 18) return false;
+      ++i_;
+      b_.has_number = true;
+      b_.number = readInteger();
+    }
+    return simpleWords();
+  }
+
+ private:
+  void generalStatements() {
     while (true) {
       skipSpaces();
       if (i_ >= s_.size()) break;
@@ -92,7 +113,6 @@ class Parser {
     }
   }
 
- private:
   Block& b_;
   const std::string_view s_;
   const ParseLimits& limits_;
@@ -281,6 +301,7 @@ class Parser {
       b_.stmts.push_back(st);
       p = next;
     }
+    if (p != base + s_.size()) return give_up();  // a '\0' inside the block (not normalised)
     i_ = s_.size();
     return true;
   }
@@ -1104,6 +1125,15 @@ bool normalizeLine(std::string_view text, std::string& out, int* bad_column) {
 }
 
 void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& limits) {
+  out.clear();
+  out.line = line;
+  // Most blocks of CAM programs (N10 G1 X10.5 Y2 F1000) are plain upper-case words, which
+  // normalising would leave as they are: the fast path tries the block as written first.
+  const size_t n = text.size();
+  if (out.buffer.size() < n + 1) out.buffer.resize(n + 1);
+  std::memcpy(out.buffer.data(), text.data(), n);
+  out.buffer[n] = '\0';
+  if (Parser(out, std::string_view(out.buffer.data(), n), limits).parseWritten()) return;
   out.clear();
   out.line = line;
   int bad = 0;

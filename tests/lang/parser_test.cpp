@@ -546,6 +546,25 @@ void expectSameAsGeneralPath(const std::string& text) {
   }
 }
 
+// The fast path takes a block as written when normalising would not change it, block number
+// included; anything else is normalised first, as before.
+TEST(Parser, PlainBlockAsWritten) {
+  Block b = parse("N10 G1 X1.5 CR=2");
+  EXPECT_TRUE(b.has_number);
+  EXPECT_EQ(b.number, 10);
+  ASSERT_EQ(b.stmts.size(), 3u);
+  EXPECT_EQ(b.stmts[2].name, "CR");
+  EXPECT_EQ(b.stmts[2].column, 13);
+  Block c = parse("n10 g1 x1.5 ; comment");
+  EXPECT_TRUE(c.has_number);
+  ASSERT_EQ(c.stmts.size(), 2u);
+  EXPECT_EQ(c.stmts[1].name, "X");
+  EXPECT_EQ(wordValue(c, c.stmts[1]), 1.5);
+  EXPECT_EQ(parseAlarm("N1234567890123456789 X1"), alarm_no::kSyntaxError);
+  EXPECT_EQ(parseAlarm(std::string_view("G1 X1\0 Y2", 10)), alarm_no::kBadCharacter);
+  EXPECT_EQ(parseAlarm("G1 X1 \x01"), alarm_no::kBadCharacter);
+}
+
 TEST(Parser, PlainWordFastPathMatchesGeneralPath) {
   for (const char* text :
        {"G1 X10.5 Y-2 F1000", "G3 X100 Y10 CR=10", "G1X10Y-5.5Z+.5", "T1 D1", "M30", "X-.5",
@@ -557,8 +576,10 @@ TEST(Parser, PlainWordFastPathMatchesGeneralPath) {
     expectSameAsGeneralPath(text);
   }
   // Random sequences of tokens: whatever the fast path takes, it must take the same way.
-  const char* tokens[] = {"X", "G", "CR", "R", "M", "I", "E", "EX", "=", "-", "+", ".",
-                          "1", "10", "5.25", " ", "\t", "0", "==", "(", "DISC", "Y", "F"};
+  const std::string tokens[] = {"X", "G", "CR", "R", "M", "I", "E", "EX", "=", "-", "+", ".",
+                                "1", "10", "5.25", " ", "\t", "0", "==", "(", "DISC", "Y", "F",
+                                "x", "cr", ";", "\r", "\x01", "\xE4", std::string(1, '\0'),
+                                "N", "\"A\""};
   unsigned seed = 12345;
   for (int n = 0; n < 20000; ++n) {
     seed = seed * 1103515245u + 12345u;
@@ -566,7 +587,7 @@ TEST(Parser, PlainWordFastPathMatchesGeneralPath) {
     const int count = static_cast<int>((seed >> 8) % 9);
     for (int k = 0; k < count; ++k) {
       seed = seed * 1103515245u + 12345u;
-      text += tokens[(seed >> 16) % (sizeof tokens / sizeof tokens[0])];
+      text += tokens[(seed >> 16) % std::size(tokens)];
     }
     expectSameAsGeneralPath(text);
     if (HasFailure()) break;
