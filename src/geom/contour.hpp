@@ -61,8 +61,9 @@ struct Box {
       const double r = length(e.p0 - e.c);
       lo_a = e.c.a - r, hi_a = e.c.a + r, lo_o = e.c.o - r, hi_o = e.c.o + r;
     } else {
-      lo_a = std::fmin(e.p0.a, e.p1.a), hi_a = std::fmax(e.p0.a, e.p1.a);
-      lo_o = std::fmin(e.p0.o, e.p1.o), hi_o = std::fmax(e.p0.o, e.p1.o);
+      // Finite coordinates (block_executor): plain comparisons, no fmin/fmax calls.
+      lo_a = e.p0.a < e.p1.a ? e.p0.a : e.p1.a, hi_a = e.p0.a < e.p1.a ? e.p1.a : e.p0.a;
+      lo_o = e.p0.o < e.p1.o ? e.p0.o : e.p1.o, hi_o = e.p0.o < e.p1.o ? e.p1.o : e.p0.o;
     }
   }
   bool overlaps(const Box& b) const {
