@@ -385,7 +385,9 @@ void Interpreter::doMotion() {
       raise(alarm_no::kValueRange,
             fmt::format("value range exceeded: position {} of axis {}", target[i], "XYZ"[i]));
   }
-  place::MotionBlock m;
+  // The interpreter's one motion block, reused: every member is set below (no zeroing of the
+  // whole block for every motion). Later stages copy what they keep.
+  place::MotionBlock& m = motion_;
   m.motion = modal_.motion;
   // A SAR block is a linear block: its own G0/G1 (G2/G3 modal count as G1) moves P2 -> P0.
   if (words_.sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
@@ -400,7 +402,11 @@ void Interpreter::doMotion() {
       raise(alarm_no::kFeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
     m.feed = modal_.feed;
     m.has_feed = true;
+  } else {
+    m.feed = 0;
+    m.has_feed = false;
   }
+  m.sar = nullptr;
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     PlaneAxes pa = planeAxes(modal_.plane);
     if (words_.centre[pa.applicate])
@@ -447,6 +453,9 @@ void Interpreter::doMotion() {
     m.applicate = pa.applicate;
     m.turns = words_.turn.value_or(0);
   } else {
+    m.centre = {};
+    m.applicate = 2;
+    m.turns = 0;
     // Tool length: each BCS axis takes up the length vector with the first linear block that
     // moves it after the selection (W1 2.1, spec §2.6).
     Vec3 full = toolOffset();
@@ -482,9 +491,12 @@ void Interpreter::doMotion() {
   m.trc.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
   // Computed geometry must stay finite and within the machine's number range: a frame with a
   // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
-  Vec3 checks[] = {toBcs(m.end) + applied_offset_, toBcs(m.centre)};
-  for (const Vec3& p : checks)
+  // The end point, and a circle's centre (a line has none).
+  const Vec3 checks[] = {toBcs(m.end) + applied_offset_, toBcs(m.centre)};
+  const int n_checks = m.motion == Motion::G2 || m.motion == Motion::G3 ? 2 : 1;
+  for (int c = 0; c < n_checks; ++c)
     for (int i = 0; i < 3; ++i) {
+      const Vec3& p = checks[c];
       if (std::fabs(p[i]) <= 1e9) continue;  // the usual case: one comparison (false for NaN)
       if (!std::isfinite(p[i]))
         raise(alarm_no::kArithmetic, "arithmetic error in part program: position is not a finite number");

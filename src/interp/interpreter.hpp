@@ -161,6 +161,7 @@ class Interpreter final : public lang::Environment {
   Frame pframe_;
   Affine act_;
   Affine act_inverse_;
+  place::MotionBlock motion_;  // doMotion's block (reused, see there)
   bool act_identity_ = true;  // act_ is exactly the identity: doMotion skips the products
   unsigned long long act_serial_ = 1;  // counts the changes of act_ (MotionBlock::frame_serial)
   // Machine data read per block, looked up once.
