@@ -393,6 +393,7 @@ void Interpreter::doMotion() {
   if (words_.sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
   m.frame = frame;
   m.frame_serial = suppress ? 0 : act_serial_;
+  m.frame_identity = plain;
   m.line = line_;
   m.file = file_;
   m.start = suppress ? bcs_ : wcsOf(bcs_);

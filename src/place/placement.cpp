@@ -23,7 +23,7 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
     s.end = g.end;
     s.centre = g.centre;
     s.normal = normal;
-  } else if (m.frame.isIdentity()) {  // no frame: only the tool offset
+  } else if (m.frame_identity) {  // no frame: only the tool offset
     s.start = g.start + m.tool_offset;
     s.end = g.end + m.tool_offset;
     if (g.motion == Motion::G2 || g.motion == Motion::G3) s.centre = g.centre + m.tool_offset;

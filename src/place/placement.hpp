@@ -27,6 +27,7 @@ struct MotionBlock {
   // Blocks with the same serial have the same frame (the interpreter counts its frame changes;
   // 0: frames suppressed): saves comparing frames where they are the same, as they usually are.
   unsigned long long frame_serial = 0;
+  bool frame_identity = false;  // `frame` is exactly the identity (set with it; false: apply it)
   Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
   double feed = 0;
   bool has_feed = false;
