@@ -17,9 +17,8 @@ inline constexpr char kDigitPairs[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-// Writes v in decimal and returns the end; values below 10000 (most coordinates, line numbers
-// and feeds) without a loop.
-inline char* writeUnsigned(char* out, unsigned v) {
+// Writes v < 10000 in decimal and returns the end.
+inline char* writeBelow10000(char* out, unsigned v) {
   if (v < 100) {
     if (v < 10) {
       *out = static_cast<char>('0' + v);
@@ -28,16 +27,27 @@ inline char* writeUnsigned(char* out, unsigned v) {
     std::memcpy(out, kDigitPairs + 2 * v, 2);
     return out + 2;
   }
-  if (v < 10000) {
-    const unsigned hi = v / 100, lo = v % 100;
-    if (hi < 10) {
-      *out++ = static_cast<char>('0' + hi);
-    } else {
-      std::memcpy(out, kDigitPairs + 2 * hi, 2);
-      out += 2;
-    }
-    std::memcpy(out, kDigitPairs + 2 * lo, 2);
-    return out + 2;
+  const unsigned hi = v / 100, lo = v % 100;
+  if (hi < 10) {
+    *out++ = static_cast<char>('0' + hi);
+  } else {
+    std::memcpy(out, kDigitPairs + 2 * hi, 2);
+    out += 2;
+  }
+  std::memcpy(out, kDigitPairs + 2 * lo, 2);
+  return out + 2;
+}
+
+// Writes v in decimal and returns the end; below 1e8 (coordinates, line numbers, feeds) from
+// the pair table without a loop.
+inline char* writeUnsigned(char* out, unsigned v) {
+  if (v < 10000) return writeBelow10000(out, v);
+  if (v < 100000000) {
+    out = writeBelow10000(out, v / 10000);
+    const unsigned low = v % 10000;
+    std::memcpy(out, kDigitPairs + 2 * (low / 100), 2);
+    std::memcpy(out + 2, kDigitPairs + 2 * (low % 100), 2);
+    return out + 4;
   }
   return std::to_chars(out, out + 10, v).ptr;
 }

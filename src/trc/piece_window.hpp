@@ -20,7 +20,7 @@ class PieceWindow {
   T& back() { return (*this)[size_ - 1]; }
   // A slot at the back to fill (it may hold an old element: the caller assigns all of it).
   T& pushBack() {
-    if (size_ == slots_.size()) grow();
+    if (size_ == capacity_) grow();
     ++size_;
     return back();
   }
@@ -38,12 +38,15 @@ class PieceWindow {
     std::vector<T> bigger(slots_.empty() ? 8 : slots_.size() * 2);
     for (size_t i = 0; i < size_; ++i) bigger[i] = std::move((*this)[i]);
     slots_ = std::move(bigger);
-    mask_ = slots_.size() - 1;
+    capacity_ = slots_.size();
+    mask_ = capacity_ - 1;
     head_ = 0;
   }
 
   std::vector<T> slots_;
-  size_t mask_ = 0;  // slots_.size() - 1 (a Piece's size is no power of two: no division)
+  // slots_.size() and slots_.size() - 1, kept: a Piece's size is no power of two, and
+  // vector::size() would divide by it.
+  size_t capacity_ = 0, mask_ = 0;
   size_t head_ = 0, size_ = 0;
 };
 

@@ -59,7 +59,10 @@ TEST(ShortestNumber, UnsignedAsToString) {
   char text[16];
   for (unsigned v = 0; v < 100000; ++v)
     ASSERT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
-  for (unsigned v : {999999u, 1000000u, 123456789u, 4294967295u})
+  for (unsigned v = 100000; v < 100000000; v += 9973)
+    ASSERT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
+  for (unsigned v : {999999u, 1000000u, 10000000u, 99999999u, 100000000u, 123456789u,
+                     4294967295u})
     EXPECT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
 }
 
