@@ -52,20 +52,45 @@ inline char* writeUnsigned(char* out, unsigned v) {
   return std::to_chars(out, out + 10, v).ptr;
 }
 
+// The fast path of writeShortest, inline for writers that put out many numbers per row: v in
+// fixed notation when it is a whole number or has at most six decimals and lies below 1e9 (the
+// coordinates, feeds and centres of real programs), else nullptr.
+//
+// {fmt} writes fixed notation from 1e-4 up to 1e16; below 1e9 doubles are closer than 1e-6 to
+// each other, so a value equal to n / 1e6 (n an integer) has no shorter representation than
+// n / 1e6 with its trailing zeros removed, and that text reads back as n / 1e6 = v (the
+// division is correctly rounded, as is reading the text).
+inline char* writeFixed(char* out, double v) {
+  const double a = v < 0 ? -v : v;
+  if (!(a < 1e9)) return nullptr;  // also NaN
+  const auto whole = static_cast<unsigned>(a);  // a < 1e9 < 2^32
+  if (static_cast<double>(whole) == a) {
+    if (v < 0 && whole != 0) *out++ = '-';  // -0 prints as 0
+    return writeUnsigned(out, whole);
+  }
+  if (a < 1e-4) return nullptr;  // {fmt} writes these with an exponent
+  // Signed 64-bit conversions (one instruction each): m < 1e15 + 1.
+  const auto m = static_cast<long long>(a * 1e6 + 0.5);
+  if (static_cast<double>(m) / 1e6 != a) return nullptr;  // more than six decimals
+  if (v < 0) *out++ = '-';
+  out = writeUnsigned(out, static_cast<unsigned>(m / 1000000));
+  const auto frac = static_cast<unsigned>(m % 1000000);  // not 0: v is no whole number
+  // Six digits as three pairs, then the trailing zeros cut off.
+  *out++ = '.';
+  std::memcpy(out, kDigitPairs + 2 * (frac / 10000), 2);
+  std::memcpy(out + 2, kDigitPairs + 2 * (frac / 100 % 100), 2);
+  std::memcpy(out + 4, kDigitPairs + 2 * (frac % 100), 2);
+  out += 6;
+  while (out[-1] == '0') --out;  // frac > 0: stops at a non-zero digit
+  return out;
+}
+
 // Writes v at `out` (room for 32 characters) and returns the end.
 char* writeShortest(char* out, double v);
 
-// The same, with whole numbers below 1e9 (feeds, levels, many programmed points) written here
-// without a call: for writers that put out many numbers per row.
+// The same, with the fast path inline (no call for the usual numbers).
 inline char* writeShortestInline(char* out, double v) {
-  const double a = v < 0 ? -v : v;
-  if (a < 1e9) {
-    const auto whole = static_cast<unsigned>(a);
-    if (static_cast<double>(whole) == a) {
-      if (v < 0 && whole != 0) *out++ = '-';  // -0 prints as 0
-      return writeUnsigned(out, whole);
-    }
-  }
+  if (char* end = writeFixed(out, v)) return end;
   return writeShortest(out, v);
 }
 
