@@ -4,8 +4,7 @@
 
 namespace ncoffset::out {
 
-char* writeShortest(char* out, double v) {
-  if (char* end = writeFixed(out, v)) return end;
+char* writeShortestSlow(char* out, double v) {
   return fmt::format_to(out, FMT_COMPILE("{}"), v + 0.0);  // -0 prints as 0
 }
 

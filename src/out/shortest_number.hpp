@@ -85,13 +85,14 @@ inline char* writeFixed(char* out, double v) {
   return out;
 }
 
-// Writes v at `out` (room for 32 characters) and returns the end.
-char* writeShortest(char* out, double v);
+// Every other double, as {fmt}'s "{}" writes it (out of line: the float-to-decimal conversion).
+char* writeShortestSlow(char* out, double v);
 
-// The same, with the fast path inline (no call for the usual numbers).
-inline char* writeShortestInline(char* out, double v) {
+// Writes v at `out` (room for 32 characters) and returns the end; the usual numbers inline,
+// without a call.
+inline char* writeShortest(char* out, double v) {
   if (char* end = writeFixed(out, v)) return end;
-  return writeShortest(out, v);
+  return writeShortestSlow(out, v);
 }
 
 inline void appendShortest(fmt::memory_buffer& b, double v) {

@@ -47,12 +47,12 @@ void CsvWriter::segment(const Segment& s) {
   *p++ = m[1];
   for (double v : {s.end.x, s.end.y, s.end.z}) {
     *p++ = ',';
-    p = writeShortestInline(p, v);
+    p = writeShortest(p, v);
   }
   if (s.motion == Motion::G2 || s.motion == Motion::G3) {
     for (double v : {s.centre.x, s.centre.y, s.centre.z}) {
       *p++ = ',';
-      p = writeShortestInline(p, v);
+      p = writeShortest(p, v);
     }
   } else {
     *p++ = ',';
@@ -60,7 +60,7 @@ void CsvWriter::segment(const Segment& s) {
     *p++ = ',';
   }
   *p++ = ',';
-  if (s.has_feed) p = writeShortestInline(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
+  if (s.has_feed) p = writeShortest(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
   *p++ = '\n';
   b.resize(used + static_cast<size_t>(p - row));
   w_.lineDone();
