@@ -16,6 +16,7 @@ namespace ncoffset::out {
 namespace {
 
 using test::File;
+using test::makeAlarm;
 using test::readAll;
 
 std::vector<std::string> lines(const std::string& s) {
@@ -34,16 +35,6 @@ Segment line(int no, Motion m, Vec3 end, double feed = 0, bool has_feed = false)
   s.feed = feed;
   s.has_feed = has_feed;
   return s;
-}
-
-// Built member by member (GCC 12 warns falsely on the nested aggregate initialiser).
-Alarm makeAlarm(int number, const std::string& file, int at, const std::string& text) {
-  Alarm a;
-  a.number = number;
-  a.where.file = file;
-  a.where.line = at;
-  a.text = text;
-  return a;
 }
 
 Segment arc(int no, Motion m, Vec3 end, Vec3 centre, double feed) {
