@@ -130,17 +130,17 @@ void BM_LoopArcsExpr(benchmark::State& state) {
 // output; `decimals` shifts the contour and the tool by fractions of a millimetre so that every
 // output number has decimals (the number writer's slower path).
 std::string trcProgram(long blocks, bool decimals = false) {
-  std::string t = decimals ? "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4.0625\nT1 D1\nG17 G90 G0 X-20 Y-20 Z0.5\n"
-                             "G41 CDON G1 X10.375 Y0.125 F1000.5\n"
-                           : "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\nT1 D1\nG17 G90 G0 X-20 Y-20 Z0\n"
-                             "G41 CDON G1 X10 Y0 F1000\n";
-  const char* lap[] = {"G1 X90 Y0\n", "G3 X100 Y10 CR=10\n", "G1 X100 Y50\n",
-                       "G3 X90 Y60 CR=10\n", "G1 X10 Y60\n", "G3 X0 Y50 CR=10\n",
-                       "G1 X0 Y10\n", "G3 X10 Y0 CR=10\n"};
-  const char* lap_decimals[] = {"G1 X90.375 Y0.125\n", "G3 X100.375 Y10.125 CR=10\n",
+  std::string t = decimals
+                      ? "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4.0625\nT1 D1\nG17 G90 G0 X-20 Y-20 Z0.5\n"
+                        "G41 CDON G1 X10.375 Y0.125 F1000.5\n"
+                      : "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\nT1 D1\nG17 G90 G0 X-20 Y-20 Z0\n"
+                        "G41 CDON G1 X10 Y0 F1000\n";
+  const char* lap[] = {"G1 X90 Y0\n",  "G3 X100 Y10 CR=10\n", "G1 X100 Y50\n", "G3 X90 Y60 CR=10\n",
+                       "G1 X10 Y60\n", "G3 X0 Y50 CR=10\n",   "G1 X0 Y10\n",   "G3 X10 Y0 CR=10\n"};
+  const char* lap_decimals[] = {"G1 X90.375 Y0.125\n",   "G3 X100.375 Y10.125 CR=10\n",
                                 "G1 X100.375 Y50.125\n", "G3 X90.375 Y60.125 CR=10\n",
-                                "G1 X10.375 Y60.125\n", "G3 X0.375 Y50.125 CR=10\n",
-                                "G1 X0.375 Y10.125\n", "G3 X10.375 Y0.125 CR=10\n"};
+                                "G1 X10.375 Y60.125\n",  "G3 X0.375 Y50.125 CR=10\n",
+                                "G1 X0.375 Y10.125\n",   "G3 X10.375 Y0.125 CR=10\n"};
   for (long i = 0; i < blocks; ++i) t += (decimals ? lap_decimals : lap)[i % 8];
   t += decimals ? "G1 X10.375 Y0.125\nG40 X-20 Y-20\nM30\n" : "G1 X10 Y0\nG40 X-20 Y-20\nM30\n";
   return t;
@@ -184,15 +184,25 @@ int main(int argc, char** argv) {
   if (const char* env = std::getenv("NCOFFSET_BENCH_BLOCKS")) blocks = std::atol(env);
   if (blocks < 5) blocks = 5;
   benchmark::RegisterBenchmark("BM_PlainG1", BM_PlainG1)
-      ->Arg(blocks)->Unit(benchmark::kMillisecond)->Iterations(5);
+      ->Arg(blocks)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(5);
   benchmark::RegisterBenchmark("BM_LoopArcsExpr", BM_LoopArcsExpr)
-      ->Arg(blocks / 5)->Unit(benchmark::kMillisecond)->Iterations(3);
+      ->Arg(blocks / 5)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(3);
   benchmark::RegisterBenchmark("BM_PlainG1Csv", BM_PlainG1Csv)
-      ->Arg(blocks)->Unit(benchmark::kMillisecond)->Iterations(5);
+      ->Arg(blocks)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(5);
   benchmark::RegisterBenchmark("BM_TrcContourCsv", BM_TrcContourCsv)
-      ->Arg(blocks)->Unit(benchmark::kMillisecond)->Iterations(3);
+      ->Arg(blocks)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(3);
   benchmark::RegisterBenchmark("BM_TrcContourCsvDecimals", BM_TrcContourCsvDecimals)
-      ->Arg(blocks)->Unit(benchmark::kMillisecond)->Iterations(3);
+      ->Arg(blocks)
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(3);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -1,12 +1,12 @@
 // Replays fuzz inputs without libFuzzer (any compiler): each argument is a file or a folder
 // of files, passed one by one to LLVMFuzzerTestOneInput. CI runs it over fuzz/corpus/ under
 // ASan+UBSan, so every input that ever found a bug stays a regression test.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <algorithm>
 #include <vector>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);

@@ -15,15 +15,15 @@ namespace ncoffset {
 
 // Explicit resource limits (docs/limits.md). Exceeding one ends the run with an alarm.
 struct Limits {
-  size_t max_line_length = 65536;        // characters in one block
-  long long max_blocks = 100000000;      // executed blocks (endless-loop guard)
-  int max_expression_depth = 64;         // operator / parenthesis nesting in one expression
-  int max_program_levels = 16;           // main program + 15 subprogram levels (PM-NC p493)
-  int max_control_depth = 16;            // nested control structures per program level
-  size_t max_variables = 10000;          // user variables (DEF) alive at once
-  size_t max_array_elements = 1000000;   // elements of one array
-  size_t max_total_elements = 4000000;   // elements of all live arrays together
-  size_t max_tool_edges = 32000;         // cutting edges in the tool offset memory
+  size_t max_line_length = 65536;       // characters in one block
+  long long max_blocks = 100000000;     // executed blocks (endless-loop guard)
+  int max_expression_depth = 64;        // operator / parenthesis nesting in one expression
+  int max_program_levels = 16;          // main program + 15 subprogram levels (PM-NC p493)
+  int max_control_depth = 16;           // nested control structures per program level
+  size_t max_variables = 10000;         // user variables (DEF) alive at once
+  size_t max_array_elements = 1000000;  // elements of one array
+  size_t max_total_elements = 4000000;  // elements of all live arrays together
+  size_t max_tool_edges = 32000;        // cutting edges in the tool offset memory
 };
 
 enum class CoordSystem { MCS, WCS };

@@ -29,10 +29,10 @@ struct Frame {
 
   // Programmable-frame commands (PM-NC 309): the non-A forms replace the frame, the A forms act
   // in the already transformed system.
-  void addTranslation(Vec3 t);                 // ATRANS: t in the current (inner) system
-  void addRotation(const Mat3& r);             // AROT
-  void addScale(Vec3 s);                       // ASCALE
-  void addMirror(int axis);                    // AMIRROR
+  void addTranslation(Vec3 t);      // ATRANS: t in the current (inner) system
+  void addRotation(const Mat3& r);  // AROT
+  void addScale(Vec3 s);            // ASCALE
+  void addMirror(int axis);         // AMIRROR
 };
 
 // Frame chain operator `A:B` (K2): B acts inside A.

@@ -96,9 +96,12 @@ struct PlaneAxes {
 };
 constexpr PlaneAxes planeAxes(Plane p) {
   switch (p) {
-    case Plane::G17: return {0, 1, 2};
-    case Plane::G18: return {2, 0, 1};
-    case Plane::G19: return {1, 2, 0};
+    case Plane::G17:
+      return {0, 1, 2};
+    case Plane::G18:
+      return {2, 0, 1};
+    case Plane::G19:
+      return {1, 2, 0};
   }
   return {0, 1, 2};
 }

@@ -13,8 +13,8 @@ const char* motionName(Motion m);
 
 // One output segment. Points are in the coordinate system chosen by the run (MCS or WCS).
 struct Segment {
-  int line = 0;          // 1-based source line of the block that produced it
-  int file = 0;          // index into the run's file table (0 = main program)
+  int line = 0;  // 1-based source line of the block that produced it
+  int file = 0;  // index into the run's file table (0 = main program)
   Motion motion = Motion::G1;
   Vec3 start;            // where the segment starts
   Vec3 end;              // where it ends

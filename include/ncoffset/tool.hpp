@@ -13,8 +13,8 @@ namespace ncoffset {
 
 // $TC_DP1..$TC_DP25 and the orientation data of one cutting edge (spec §1.2, §4).
 struct EdgeData {
-  std::array<double, 26> dp{};  // dp[n] = $TC_DPn (dp[0] unused)
-  int dpv = 0;                  // $TC_DPV: coded orientation 1..6 (0: from DPV3..5)
+  std::array<double, 26> dp{};          // dp[n] = $TC_DPn (dp[0] unused)
+  int dpv = 0;                          // $TC_DPV: coded orientation 1..6 (0: from DPV3..5)
   double dpv3 = 0, dpv4 = 0, dpv5 = 0;  // $TC_DPV3..5: orientation along L1, L2, L3
   int type() const { return static_cast<int>(dp[1]); }
   int cuttingEdgePosition() const { return static_cast<int>(dp[2]); }  // $TC_DP2, SL 1..9
@@ -22,22 +22,24 @@ struct EdgeData {
 
 // Setting data that shape the offsets, as they were at the cutting-edge selection.
 struct ToolSettings {
-  long length_const = 0;   // SD42940 $SC_TOOL_LENGTH_CONST
-  long length_type = 0;    // SD42950 $SC_TOOL_LENGTH_TYPE
-  bool mirror_length = false;  // SD42900 $SC_MIRROR_TOOL_LENGTH
-  bool mirror_wear = false;    // SD42910 $SC_MIRROR_TOOL_WEAR
+  long length_const = 0;          // SD42940 $SC_TOOL_LENGTH_CONST
+  long length_type = 0;           // SD42950 $SC_TOOL_LENGTH_TYPE
+  bool mirror_length = false;     // SD42900 $SC_MIRROR_TOOL_LENGTH
+  bool mirror_wear = false;       // SD42910 $SC_MIRROR_TOOL_WEAR
   bool wear_sign_cutpos = false;  // SD42920 $SC_WEAR_SIGN_CUTPOS
   bool wear_sign = false;         // SD42930 $SC_WEAR_SIGN
 };
 
 // W1 2.2 / spec §1.3: tool types 400..599 are turning and grinding tools.
-constexpr bool isTurningOrGrindingType(int type) { return type >= 400 && type <= 599; }
+constexpr bool isTurningOrGrindingType(int type) {
+  return type >= 400 && type <= 599;
+}
 
 // Where each length component acts: axis[k] (0=X, 1=Y, 2=Z) and sign[k] (+1/-1) for L(k+1).
 struct LengthAssignment {
   std::array<int, 3> axis{2, 1, 0};
   std::array<int, 3> sign{1, 1, 1};
-  bool plane_independent = false;   // SD42940 != 0
+  bool plane_independent = false;     // SD42940 != 0
   bool constant_orientation = false;  // SD42940 thousands digit = 1
 };
 
@@ -76,9 +78,9 @@ std::array<double, 2> tipFromEdgeCentre(int sl, double r);
 // LENTOAX (W1 2.11, details §1): _AXIND and _MATRIX for the active edge in the coordinate
 // system `coord` (M/B/W/K/T). `frame_linear` is the linear part of WCS -> BCS.
 struct LentoaxResult {
-  int status = 0;  // 0 parallel, 1 use _MATRIX, -1 bad _COORD, -2 no tool
-  std::array<int, 3> axind{};                         // abscissa, ordinate, applicate
-  std::array<std::array<double, 3>, 3> matrix{};      // [axis][component]
+  int status = 0;              // 0 parallel, 1 use _MATRIX, -1 bad _COORD, -2 no tool
+  std::array<int, 3> axind{};  // abscissa, ordinate, applicate
+  std::array<std::array<double, 3>, 3> matrix{};  // [axis][component]
 };
 LentoaxResult lentoax(const EdgeData& e, const ToolSettings& s, Plane plane,
                       const std::array<bool, 3>& mirrored, const Mat3& frame_linear,

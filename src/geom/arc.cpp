@@ -50,8 +50,7 @@ ArcSolution solveArc(const ArcRequest& r) {
                         s.radius, r2, std::fabs(r2 - s.radius), tol));
     return s;
   }
-  if (!r.end)
-    raise(alarm_no::kCircleProgramming, "circle programming error: end point missing");
+  if (!r.end) raise(alarm_no::kCircleProgramming, "circle programming error: end point missing");
   s.end = *r.end;
   double d = dist(r.start, s.end);
   if (d < 1e-9)
@@ -66,9 +65,10 @@ ArcSolution solveArc(const ArcRequest& r) {
     if (rad < 1e-9) raise(alarm_no::kCircleProgramming, "circle programming error: CR=0");
     double tol = std::fmax(r.tol_const, r.tol_factor * rad);
     if (d > 2 * rad + tol)
-      raise(alarm_no::kCircleEndPoint,
-            fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
-                        d, 2 * rad));
+      raise(
+          alarm_no::kCircleEndPoint,
+          fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
+                      d, 2 * rad));
     h = std::sqrt(std::fmax(0.0, rad * rad - d * d / 4));
     bool small = *r.cr > 0;  // CR>0: arc up to 180 degrees
     double side = (r.ccw == small) ? 1 : -1;

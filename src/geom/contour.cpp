@@ -11,7 +11,9 @@ Vec2 unit(Vec2 v) {
   return l > 0 ? (1.0 / l) * v : Vec2{1, 0};
 }
 
-double angleOf(Vec2 c, Vec2 p) { return std::atan2(p.o - c.o, p.a - c.a); }
+double angleOf(Vec2 c, Vec2 p) {
+  return std::atan2(p.o - c.o, p.a - c.a);
+}
 
 // Fraction of the arc's sweep at which angle `ang` lies, measured from p0 in the direction of
 // travel; in [0, 1] on the arc, the rest of the circle maps to the nearer extension.

@@ -11,14 +11,28 @@
 
 namespace ncoffset::geom {
 
-inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.a + b.a, a.o + b.o}; }
-inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.a - b.a, a.o - b.o}; }
-inline Vec2 operator*(double s, Vec2 v) { return {s * v.a, s * v.o}; }
-inline double dot(Vec2 a, Vec2 b) { return a.a * b.a + a.o * b.o; }
-inline double cross(Vec2 a, Vec2 b) { return a.a * b.o - a.o * b.a; }
+inline Vec2 operator+(Vec2 a, Vec2 b) {
+  return {a.a + b.a, a.o + b.o};
+}
+inline Vec2 operator-(Vec2 a, Vec2 b) {
+  return {a.a - b.a, a.o - b.o};
+}
+inline Vec2 operator*(double s, Vec2 v) {
+  return {s * v.a, s * v.o};
+}
+inline double dot(Vec2 a, Vec2 b) {
+  return a.a * b.a + a.o * b.o;
+}
+inline double cross(Vec2 a, Vec2 b) {
+  return a.a * b.o - a.o * b.a;
+}
 // Coordinates are limited to 1e9 mm (block_executor), so no overflow guard (hypot) is needed.
-inline double length(Vec2 v) { return std::sqrt(v.a * v.a + v.o * v.o); }
-inline Vec2 leftNormal(Vec2 t) { return {-t.o, t.a}; }
+inline double length(Vec2 v) {
+  return std::sqrt(v.a * v.a + v.o * v.o);
+}
+inline Vec2 leftNormal(Vec2 t) {
+  return {-t.o, t.a};
+}
 
 // A line (arc == false) or a circular arc from p0 to p1 about c, turning ccw (G3) or cw (G2).
 // `turns` full revolutions are added to the sweep (TURN=).

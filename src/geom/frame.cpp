@@ -12,10 +12,26 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 void sinCos(double degrees, double& s, double& c) {
   double r = std::fmod(degrees, 360.0);
   if (r < 0) r += 360.0;
-  if (r == 0) { s = 0; c = 1; return; }
-  if (r == 90) { s = 1; c = 0; return; }
-  if (r == 180) { s = 0; c = -1; return; }
-  if (r == 270) { s = -1; c = 0; return; }
+  if (r == 0) {
+    s = 0;
+    c = 1;
+    return;
+  }
+  if (r == 90) {
+    s = 1;
+    c = 0;
+    return;
+  }
+  if (r == 180) {
+    s = 0;
+    c = -1;
+    return;
+  }
+  if (r == 270) {
+    s = -1;
+    c = 0;
+    return;
+  }
   s = std::sin(degrees * kDeg);
   c = std::cos(degrees * kDeg);
 }
@@ -26,9 +42,15 @@ Mat3 rotationAbout(int axis, double degrees) {
   sinCos(degrees, s, c);
   Mat3 r;
   switch (axis) {
-    case 0: r.m = {{{1, 0, 0}, {0, c, -s}, {0, s, c}}}; break;
-    case 1: r.m = {{{c, 0, s}, {0, 1, 0}, {-s, 0, c}}}; break;
-    default: r.m = {{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}}; break;
+    case 0:
+      r.m = {{{1, 0, 0}, {0, c, -s}, {0, s, c}}};
+      break;
+    case 1:
+      r.m = {{{c, 0, s}, {0, 1, 0}, {-s, 0, c}}};
+      break;
+    default:
+      r.m = {{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}};
+      break;
   }
   return r;
 }
@@ -62,13 +84,16 @@ Vec3 rpyAngles(const Mat3& r) {
 
 bool Frame::isIdentity() const {
   for (int i = 0; i < 3; ++i) {
-    if (coarse[i] != 0 || fine[i] != 0 || rotation[i] != 0 || scale[i] != 1 || mirror[static_cast<size_t>(i)])
+    if (coarse[i] != 0 || fine[i] != 0 || rotation[i] != 0 || scale[i] != 1 ||
+        mirror[static_cast<size_t>(i)])
       return false;
   }
   return true;
 }
 
-Mat3 Frame::rotationMatrix() const { return rpyMatrix(rotation); }
+Mat3 Frame::rotationMatrix() const {
+  return rpyMatrix(rotation);
+}
 
 Affine Frame::affine() const {
   Vec3 sm{scale.x * (mirror[0] ? -1 : 1), scale.y * (mirror[1] ? -1 : 1),
@@ -83,7 +108,8 @@ Frame chain(const Frame& a, const Frame& b) {
   const Mat3 la = a.affine().linear;
   r.coarse = a.coarse + la * b.coarse;
   r.fine = a.fine + la * b.fine;
-  if (b.rotation.x != 0 || b.rotation.y != 0 || b.rotation.z != 0) r.addRotation(b.rotationMatrix());
+  if (b.rotation.x != 0 || b.rotation.y != 0 || b.rotation.z != 0)
+    r.addRotation(b.rotationMatrix());
   r.addScale(b.scale);
   for (int i = 0; i < 3; ++i)
     if (b.mirror[static_cast<size_t>(i)]) r.addMirror(i);
@@ -103,7 +129,9 @@ void Frame::addRotation(const Mat3& r) {
   rotation = rpyAngles(rotationMatrix() * (m * r * m));
 }
 
-void Frame::addScale(Vec3 s) { scale = {scale.x * s.x, scale.y * s.y, scale.z * s.z}; }
+void Frame::addScale(Vec3 s) {
+  scale = {scale.x * s.x, scale.y * s.y, scale.z * s.z};
+}
 
 void Frame::addMirror(int axis) {
   auto a = static_cast<size_t>(axis);

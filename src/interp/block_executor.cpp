@@ -19,10 +19,14 @@ namespace {
 
 int axisIndex(char c) {
   switch (c) {
-    case 'X': return 0;
-    case 'Y': return 1;
-    case 'Z': return 2;
-    default: return -1;
+    case 'X':
+      return 0;
+    case 'Y':
+      return 1;
+    case 'Z':
+      return 2;
+    default:
+      return -1;
   }
 }
 
@@ -88,12 +92,15 @@ void Interpreter::collectWord(const Stmt& st) {
       }
       case 'F': {
         double f = value();
-        if (f < 0 || f > 1e9) raise(alarm_no::kValueRange, fmt::format("value range exceeded: F{}", f));
+        if (f < 0 || f > 1e9)
+          raise(alarm_no::kValueRange, fmt::format("value range exceeded: F{}", f));
         words_.f = f;
         return;
       }
       case 'S':
-      case 'H': value(); return;  // spindle speed, auxiliary function: no path effect
+      case 'H':
+        value();
+        return;  // spindle speed, auxiliary function: no path effect
       case 'M': {
         double m = value();
         if (m < 0 || m != std::floor(m))
@@ -101,8 +108,10 @@ void Interpreter::collectWord(const Stmt& st) {
         // M6 (MD22560) changes the tool for the master spindle (MD20090 = 1).
         if (m == data_.get(md_change_m_) && st.ext <= 1) words_.tool_change = true;
         if (st.ext > 0) return;  // M2=3: function of spindle 2
-        if (m == 2 || m == 30) words_.end_program = true;
-        else if (m == 17) words_.end_subprogram = true;
+        if (m == 2 || m == 30)
+          words_.end_program = true;
+        else if (m == 17)
+          words_.end_subprogram = true;
         return;  // other M functions (M0, M1, M3..M5, M6, M8, ...) do not move the path
       }
       case 'T': {
@@ -117,7 +126,8 @@ void Interpreter::collectWord(const Stmt& st) {
         double t = value();
         if (t < 0 || t != std::floor(t) || t > tool::kMaxTool)
           raise(alarm_no::kValueRange,
-                fmt::format("value range exceeded: T{} (T numbers are whole, 0..{})", t, tool::kMaxTool));
+                fmt::format("value range exceeded: T{} (T numbers are whole, 0..{})", t,
+                            tool::kMaxTool));
         words_.tool = static_cast<int>(t);
         return;
       }
@@ -126,7 +136,8 @@ void Interpreter::collectWord(const Stmt& st) {
         double d = value();
         if (d < 0 || d != std::floor(d) || d > tool::kMaxEdge)
           raise(alarm_no::kValueRange,
-                fmt::format("value range exceeded: D{} (D numbers are whole, 0..{})", d, tool::kMaxEdge));
+                fmt::format("value range exceeded: D{} (D numbers are whole, 0..{})", d,
+                            tool::kMaxEdge));
         words_.edge = static_cast<int>(d);
         return;
       }
@@ -141,23 +152,36 @@ void Interpreter::collectWord(const Stmt& st) {
       case 'P': {
         double p = value();
         if (p != std::floor(p))
-          raise(alarm_no::kValueRange, fmt::format("value range exceeded: P{} (pass count 1..9999)", p));
+          raise(alarm_no::kValueRange,
+                fmt::format("value range exceeded: P{} (pass count 1..9999)", p));
         words_.repeat = static_cast<long long>(std::fmax(-1, std::fmin(p, 1e9)));
         return;
       }
-      case 'N': raise(alarm_no::kSyntaxError, "block number N only at the start of a block");
+      case 'N':
+        raise(alarm_no::kSyntaxError, "block number N only at the start of a block");
       default:
-        notModelled(fmt::format("address {}", name),
-                    "only the geometry axes X, Y, Z move; other axes and addresses are not modelled");
+        notModelled(
+            fmt::format("address {}", name),
+            "only the geometry axes X, Y, Z move; other axes and addresses are not modelled");
     }
   }
-  if (name == "CR") { words_.cr = value(); return; }
-  if (name == "AR") { words_.ar = value(); return; }
-  if (name == "RPL") { words_.rpl = value(); return; }
+  if (name == "CR") {
+    words_.cr = value();
+    return;
+  }
+  if (name == "AR") {
+    words_.ar = value();
+    return;
+  }
+  if (name == "RPL") {
+    words_.rpl = value();
+    return;
+  }
   if (name == "TURN") {
     double t = value();
     if (t < 0 || t > 999 || t != std::floor(t))
-      raise(alarm_no::kCircleTurns, fmt::format("wrong number of revolutions in circle programming: TURN={}", t));
+      raise(alarm_no::kCircleTurns,
+            fmt::format("wrong number of revolutions in circle programming: TURN={}", t));
     words_.turn = static_cast<int>(t);
     return;
   }
@@ -168,18 +192,26 @@ void Interpreter::collectWord(const Stmt& st) {
     modal_.disc = std::fmin(d, data_.get(md_max_disc_));
     return;
   }
-  if (name == "OFFN") { modal_.offn = toMm(value()); return; }
+  if (name == "OFFN") {
+    modal_.offn = toMm(value());
+    return;
+  }
   // SAR distances: within the machine's number range like every position.
   auto distance = [&]() {
     double v = toMm(value());
     if (!std::isfinite(v) || std::fabs(v) > 1e9)
-      raise(alarm_no::kValueRange, fmt::format("value range exceeded: {}={} (|value| <= 1e9 mm)", name, v));
+      raise(alarm_no::kValueRange,
+            fmt::format("value range exceeded: {}={} (|value| <= 1e9 mm)", name, v));
     return v;
   };
-  if (name == "DISR") { words_.disr = distance(); return; }
+  if (name == "DISR") {
+    words_.disr = distance();
+    return;
+  }
   if (name == "DISCL" || name == "DISRP") {
     if (st.mode == AxisMode::IC)
-      raise(alarm_no::kSyntaxError, fmt::format("{}=IC(..) is not allowed (incremental is the default)", name));
+      raise(alarm_no::kSyntaxError,
+            fmt::format("{}=IC(..) is not allowed (incremental is the default)", name));
     (name == "DISCL" ? words_.discl : words_.disrp) = distance();
     (name == "DISCL" ? words_.discl_ac : words_.disrp_ac) = st.mode == AxisMode::AC;
     return;
@@ -202,60 +234,167 @@ void Interpreter::collectWord(const Stmt& st) {
       raise(alarm_no::kValueRange, fmt::format("value range exceeded: FAD={}", *words_.fad));
     return;
   }
-  if (name == "SPOS" || name == "SPOSA") { value(); return; }  // spindle positioning
-  notModelled(fmt::format("address {}=", name), "this address changes the path and is not modelled");
+  if (name == "SPOS" || name == "SPOSA") {
+    value();
+    return;
+  }  // spindle positioning
+  notModelled(fmt::format("address {}=", name),
+              "this address changes the path and is not modelled");
 }
 
 void Interpreter::gCode(int g) {
   switch (g) {
-    case 0: modal_.motion = Motion::G0; words_.motion_word = true; return;
-    case 1: modal_.motion = Motion::G1; words_.motion_word = true; return;
-    case 2: modal_.motion = Motion::G2; words_.motion_word = true; return;
-    case 3: modal_.motion = Motion::G3; words_.motion_word = true; return;
-    case 4: words_.dwell = true; return;
-    case 9: case 60: case 64: case 641: case 642: case 643: case 644: case 645:
-    case 601: case 602: case 603: case 63: case 290:
+    case 0:
+      modal_.motion = Motion::G0;
+      words_.motion_word = true;
+      return;
+    case 1:
+      modal_.motion = Motion::G1;
+      words_.motion_word = true;
+      return;
+    case 2:
+      modal_.motion = Motion::G2;
+      words_.motion_word = true;
+      return;
+    case 3:
+      modal_.motion = Motion::G3;
+      words_.motion_word = true;
+      return;
+    case 4:
+      words_.dwell = true;
+      return;
+    case 9:
+    case 60:
+    case 64:
+    case 641:
+    case 642:
+    case 643:
+    case 644:
+    case 645:
+    case 601:
+    case 602:
+    case 603:
+    case 63:
+    case 290:
       return;  // exact stop / continuous path / tapping with compensating chuck: no path change
-    case 17: case 18: case 19: {
+    case 17:
+    case 18:
+    case 19: {
       Plane p = g == 17 ? Plane::G17 : g == 18 ? Plane::G18 : Plane::G19;
       if (p != modal_.plane && modal_.trc != 40)
-        raise(10757, "change of compensation plane not possible while tool radius compensation is active");
+        raise(10757,
+              "change of compensation plane not possible while tool radius compensation is active");
       modal_.plane = p;
       return;
     }
-    case 25: case 26: words_.axial_offset = g; return;  // limits: axis values are not motion
-    case 40: case 41: case 42: modal_.trc = g; return;
-    case 53: case 153: words_.suppress_frames = g; return;
-    case 54: case 55: case 56: case 57:
-      modal_.frame_select = g; words_.frame_select = true; return;
-    case 500: modal_.frame_select = 500; words_.frame_select = true; return;
-    case 58: case 59: words_.axial_offset = g; return;
-    case 70: modal_.units = Units::G70; return;
-    case 71: modal_.units = Units::G71; return;
-    case 700: modal_.units = Units::G700; return;
-    case 710: modal_.units = Units::G710; return;
-    case 90: modal_.incremental = false; return;
-    case 91: modal_.incremental = true; return;
-    case 93: modal_.feed_type = FeedType::G93; return;
-    case 94: modal_.feed_type = FeedType::G94; return;
-    case 95: modal_.feed_type = FeedType::G95; return;
-    case 96: modal_.feed_type = FeedType::G96; return;
-    case 97: modal_.feed_type = FeedType::G97; return;
-    case 140: case 141: case 142: case 143: modal_.sar_side = g; return;
-    case 340: case 341: modal_.sar_plane = g; return;
-    case 450: modal_.corner = CornerMode::TransitionCircle; return;
-    case 451: modal_.corner = CornerMode::Intersection; return;
-    case 460: case 461: case 462: modal_.trc_strategy = g; return;
-    case 147: case 148: case 247: case 248: case 347: case 348:
+    case 25:
+    case 26:
+      words_.axial_offset = g;
+      return;  // limits: axis values are not motion
+    case 40:
+    case 41:
+    case 42:
+      modal_.trc = g;
+      return;
+    case 53:
+    case 153:
+      words_.suppress_frames = g;
+      return;
+    case 54:
+    case 55:
+    case 56:
+    case 57:
+      modal_.frame_select = g;
+      words_.frame_select = true;
+      return;
+    case 500:
+      modal_.frame_select = 500;
+      words_.frame_select = true;
+      return;
+    case 58:
+    case 59:
+      words_.axial_offset = g;
+      return;
+    case 70:
+      modal_.units = Units::G70;
+      return;
+    case 71:
+      modal_.units = Units::G71;
+      return;
+    case 700:
+      modal_.units = Units::G700;
+      return;
+    case 710:
+      modal_.units = Units::G710;
+      return;
+    case 90:
+      modal_.incremental = false;
+      return;
+    case 91:
+      modal_.incremental = true;
+      return;
+    case 93:
+      modal_.feed_type = FeedType::G93;
+      return;
+    case 94:
+      modal_.feed_type = FeedType::G94;
+      return;
+    case 95:
+      modal_.feed_type = FeedType::G95;
+      return;
+    case 96:
+      modal_.feed_type = FeedType::G96;
+      return;
+    case 97:
+      modal_.feed_type = FeedType::G97;
+      return;
+    case 140:
+    case 141:
+    case 142:
+    case 143:
+      modal_.sar_side = g;
+      return;
+    case 340:
+    case 341:
+      modal_.sar_plane = g;
+      return;
+    case 450:
+      modal_.corner = CornerMode::TransitionCircle;
+      return;
+    case 451:
+      modal_.corner = CornerMode::Intersection;
+      return;
+    case 460:
+    case 461:
+    case 462:
+      modal_.trc_strategy = g;
+      return;
+    case 147:
+    case 148:
+    case 247:
+    case 248:
+    case 347:
+    case 348:
       if (words_.sar) raise(10743, "SAR programmed several times in one block");
       words_.sar = g;
       return;
-    case 33: case 34: case 35: case 331: case 332:
+    case 33:
+    case 34:
+    case 35:
+    case 331:
+    case 332:
       notModelled(fmt::format("G{}", g), "thread cutting / tapping interpolation");
-    case 74: case 75: notModelled(fmt::format("G{}", g), "reference point / fixed point approach");
-    case 110: case 111: case 112: notModelled(fmt::format("G{}", g), "polar coordinates");
-    case 291: notModelled("G291", "ISO dialect mode");
-    default: break;
+    case 74:
+    case 75:
+      notModelled(fmt::format("G{}", g), "reference point / fixed point approach");
+    case 110:
+    case 111:
+    case 112:
+      notModelled(fmt::format("G{}", g), "polar coordinates");
+    case 291:
+      notModelled("G291", "ISO dialect mode");
+    default:
+      break;
   }
   if (g >= 505 && g <= 599) {
     modal_.frame_select = g;
@@ -267,15 +406,42 @@ void Interpreter::gCode(int g) {
 
 void Interpreter::namedWord(const Stmt& st) {
   std::string_view w = st.name;
-  if (w == "NORM") { modal_.approach = Approach::Norm; return; }
-  if (w == "KONT") { modal_.approach = Approach::Kont; return; }
-  if (w == "KONTC") { modal_.approach = Approach::KontC; return; }
-  if (w == "KONTT") { modal_.approach = Approach::KontT; return; }
-  if (w == "CDON") { modal_.collision = CollisionCheck::Cdon; return; }
-  if (w == "CDOF") { modal_.collision = CollisionCheck::Cdof; return; }
-  if (w == "CDOF2") { modal_.collision = CollisionCheck::Cdof2; return; }
-  if (w == "SUPA") { words_.suppress_frames = 1; return; }
-  if (w == "RET") { words_.end_subprogram = true; return; }
+  if (w == "NORM") {
+    modal_.approach = Approach::Norm;
+    return;
+  }
+  if (w == "KONT") {
+    modal_.approach = Approach::Kont;
+    return;
+  }
+  if (w == "KONTC") {
+    modal_.approach = Approach::KontC;
+    return;
+  }
+  if (w == "KONTT") {
+    modal_.approach = Approach::KontT;
+    return;
+  }
+  if (w == "CDON") {
+    modal_.collision = CollisionCheck::Cdon;
+    return;
+  }
+  if (w == "CDOF") {
+    modal_.collision = CollisionCheck::Cdof;
+    return;
+  }
+  if (w == "CDOF2") {
+    modal_.collision = CollisionCheck::Cdof2;
+    return;
+  }
+  if (w == "SUPA") {
+    words_.suppress_frames = 1;
+    return;
+  }
+  if (w == "RET") {
+    words_.end_subprogram = true;
+    return;
+  }
   if (isOneOf(w, {"TRANS", "ATRANS", "ROT", "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR"})) {
     if (!words_.frame_command.empty())
       raise(alarm_no::kSyntaxError, "each frame statement must stand in its own block");
@@ -287,23 +453,26 @@ void Interpreter::namedWord(const Stmt& st) {
     trc_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
     return;
   }
-  if (isOneOf(w, {"STOPRE", "BRISK", "SOFT", "DRIVE", "FFWON", "FFWOF", "CFC", "CFTCP", "CFIN",
-                  "TOWSTD", "TOWMCS", "TOWWCS", "TOWBCS", "TOWTCS", "TOWKCS", "DIAMOF", "TRAFOOF",
-                  "SAVE", "DISPLOF", "DISPLON", "WAITM", "G64"}))
+  if (isOneOf(w, {"STOPRE",  "BRISK",  "SOFT",    "DRIVE",   "FFWON",  "FFWOF",  "CFC",    "CFTCP",
+                  "CFIN",    "TOWSTD", "TOWMCS",  "TOWWCS",  "TOWBCS", "TOWTCS", "TOWKCS", "DIAMOF",
+                  "TRAFOOF", "SAVE",   "DISPLOF", "DISPLON", "WAITM",  "G64"}))
     return;  // no effect on the path
-  if (isOneOf(w, {"CIP", "CT", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "DIAMON", "DIAM90",
-                  "TRAORI", "TRANSMIT", "TRACYL", "TRAANG", "ROTS", "AROTS", "CROTS", "MOVT",
-                  "INVCW", "INVCCW", "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL", "PCALL", "MCALL"}))
+  if (isOneOf(w,
+              {"CIP",    "CT",       "ASPLINE", "BSPLINE", "CSPLINE", "POLY",  "DIAMON", "DIAM90",
+               "TRAORI", "TRANSMIT", "TRACYL",  "TRAANG",  "ROTS",    "AROTS", "CROTS",  "MOVT",
+               "INVCW",  "INVCCW",   "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL",  "PCALL",  "MCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
   words_.call = w;
 }
 
-Vec3 Interpreter::bcsOfWcs(Vec3 wcs) const { return act_.apply(wcs); }
+Vec3 Interpreter::bcsOfWcs(Vec3 wcs) const {
+  return act_.apply(wcs);
+}
 
 void Interpreter::finishBlock() {
   bool frames_changed = false;
   if (words_.frame_select) {
-    int n = modal_.frame_select == 500 ? 0
+    int n = modal_.frame_select == 500  ? 0
             : modal_.frame_select < 100 ? modal_.frame_select - 53
                                         : modal_.frame_select - 500;
     iframe_ = uifr_[static_cast<size_t>(n)];
@@ -350,9 +519,12 @@ void Interpreter::finishBlock() {
     sar_.blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
-    if (levels_.size() > 1) returnFromSubprogram();  // M2/M30 in a subprogram act like M17
-    else endProgram();
-    if (!words_.call.empty()) raise(alarm_no::kSyntaxError, "program call and program end in one block");
+    if (levels_.size() > 1)
+      returnFromSubprogram();  // M2/M30 in a subprogram act like M17
+    else
+      endProgram();
+    if (!words_.call.empty())
+      raise(alarm_no::kSyntaxError, "program call and program end in one block");
     motion_before_ = modal_.motion;
     return;
   }
@@ -467,7 +639,8 @@ void Interpreter::doMotion() {
     } else {
       for (int k = 0; k < 3; ++k)
         for (int i = 0; i < 3; ++i)
-          if (words_.axis[i] && std::fabs(frame.linear.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
+          if (words_.axis[i] &&
+              std::fabs(frame.linear.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
             applied_offset_[k] = full[k];
     }
     Vec3 moved = (toBcs(target) + applied_offset_) - (bcs_ + before);
@@ -500,9 +673,11 @@ void Interpreter::doMotion() {
       const Vec3& p = checks[c];
       if (std::fabs(p[i]) <= 1e9) continue;  // the usual case: one comparison (false for NaN)
       if (!std::isfinite(p[i]))
-        raise(alarm_no::kArithmetic, "arithmetic error in part program: position is not a finite number");
+        raise(alarm_no::kArithmetic,
+              "arithmetic error in part program: position is not a finite number");
       raise(alarm_no::kValueRange,
-            fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i], "XYZ"[i]));
+            fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i],
+                        "XYZ"[i]));
     }
   block_moved_ = true;
   if (words_.sar) {
@@ -582,7 +757,8 @@ void Interpreter::doFrameCommand() {
     for (int i = 0; i < 3; ++i) {
       if (!words_.axis[i]) continue;
       if (std::fabs(v[i]) < 1e-12 || !(std::fabs(v[i]) <= 1e6))
-        raise(alarm_no::kValueRange, fmt::format("value range exceeded: scale factor {} of {}", v[i], "XYZ"[i]));
+        raise(alarm_no::kValueRange,
+              fmt::format("value range exceeded: scale factor {} of {}", v[i], "XYZ"[i]));
       s[i] = v[i];
     }
     if (cmd == "SCALE") {

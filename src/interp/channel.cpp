@@ -14,7 +14,9 @@ class SwitchSink final : public PathSink {
   PathSink* target = nullptr;
   void segment(const Segment& s) override { target->segment(s); }
   void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
-  void warning(const SourceLoc& l, int n, const std::string& t) override { target->warning(l, n, t); }
+  void warning(const SourceLoc& l, int n, const std::string& t) override {
+    target->warning(l, n, t);
+  }
   void programmed(const Segment& s) override { target->programmed(s); }
   bool wantsProgrammed() const override { return target && target->wantsProgrammed(); }
   void finish(const Alarm* a) override { target->finish(a); }
@@ -80,8 +82,12 @@ RunResult Channel::runInitText(const std::string& name, const std::string& text,
   return impl_->run(lang::SourceFile::fromString(name, text), sink, true, false);
 }
 
-const std::string& Channel::fileName(int index) const { return impl_->interp.fileName(index); }
+const std::string& Channel::fileName(int index) const {
+  return impl_->interp.fileName(index);
+}
 
-void Channel::writeVariablesJson(std::ostream& out) const { impl_->interp.writeVariablesJson(out); }
+void Channel::writeVariablesJson(std::ostream& out) const {
+  impl_->interp.writeVariablesJson(out);
+}
 
 }  // namespace ncoffset

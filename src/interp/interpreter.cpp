@@ -57,8 +57,8 @@ LoadedProgram& Interpreter::load(std::shared_ptr<lang::SourceFile> source) {
   files_.push_back(std::move(p));
   LoadedProgram& prog = *files_.back();
   try {
-    prog.index = std::make_unique<lang::ProgramIndex>(*prog.source, options_.limits.max_control_depth,
-                                                      options_.limits.max_line_length);
+    prog.index = std::make_unique<lang::ProgramIndex>(
+        *prog.source, options_.limits.max_control_depth, options_.limits.max_line_length);
   } catch (const AlarmError&) {
     file_ = prog.file_id;  // the alarm belongs to this file
     throw;
@@ -129,17 +129,27 @@ void Interpreter::executeBlock() {
       if (st.kind != StmtKind::Keyword || st.name != "PROC") lvl.defs_allowed = false;
     }
     switch (st.kind) {
-      case StmtKind::Word: collectWord(st); break;
-      case StmtKind::Assign: assign(st); break;
-      case StmtKind::Call: namedWord(st); break;
+      case StmtKind::Word:
+        collectWord(st);
+        break;
+      case StmtKind::Assign:
+        assign(st);
+        break;
+      case StmtKind::Call:
+        namedWord(st);
+        break;
       case StmtKind::ProcCall: {
         std::vector<Value> args;
         eval_.evalArgs(b, b.node(st.expr), args);
         call(st.name, args);
         break;
       }
-      case StmtKind::Keyword: executeControl(st, i, jumped); if (st.name == "CASE") i = b.stmts.size(); break;
-      case StmtKind::CaseArm: break;
+      case StmtKind::Keyword:
+        executeControl(st, i, jumped);
+        if (st.name == "CASE") i = b.stmts.size();
+        break;
+      case StmtKind::CaseArm:
+        break;
     }
   }
   if (!jumped) finishBlock();
@@ -167,14 +177,16 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
   if (kw == "DEF") {
     if (!lvl.defs_allowed)
       raise(alarm_no::kIllegalDef,
-            "illegal DEF instruction: definitions must stand before the first statement of the program");
+            "illegal DEF instruction: definitions must stand before the first statement of the "
+            "program");
     for (const auto& d : b.decls) define(d);
     return;
   }
   if (kw == "PROC") {
     if (st.ext > 0)
       raise(alarm_no::kNotModelled,
-            "PROC with formal parameters is not modelled by ncoffset (subprograms without parameters only)");
+            "PROC with formal parameters is not modelled by ncoffset (subprograms without "
+            "parameters only)");
     return;
   }
   if (st.jump) {  // GOTOF / GOTOB / GOTO / GOTOC
@@ -273,8 +285,9 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
       bool hit = arm.expr < 0;
       if (!hit) {
         Value v = eval_.eval(b, arm.expr);
-        hit = (v.isText() || sel.isText()) ? lang::toText(v) == lang::toText(sel)
-                                           : lang::realEqual(lang::toNumber(v), lang::toNumber(sel));
+        hit = (v.isText() || sel.isText())
+                  ? lang::toText(v) == lang::toText(sel)
+                  : lang::realEqual(lang::toNumber(v), lang::toNumber(sel));
       }
       if (hit) {
         jump(arm, arm.jump == 4);
@@ -345,10 +358,16 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
     const TextPos* best = nullptr;
     if (forward)
       for (const auto& p : it->second)
-        if (p.offset > here) { best = &p; break; }
+        if (p.offset > here) {
+          best = &p;
+          break;
+        }
     if (!best && backward)
       for (auto r = it->second.rbegin(); r != it->second.rend(); ++r)
-        if (r->offset < here) { best = &*r; break; }
+        if (r->offset < here) {
+          best = &*r;
+          break;
+        }
     if (best) {
       lvl.pos = *best;
       return;
@@ -372,17 +391,21 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
     }
   }
   if (quiet) return;  // GOTOC: continue with the next block
-  raise(alarm_no::kJumpNotFound,
-        fmt::format("jump destination {} not found ({} search)", label,
-                    kind == 1 ? "forward" : kind == 2 ? "backward" : "forward and backward"));
+  raise(alarm_no::kJumpNotFound, fmt::format("jump destination {} not found ({} search)", label,
+                                             kind == 1   ? "forward"
+                                             : kind == 2 ? "backward"
+                                                         : "forward and backward"));
 }
 
-void Interpreter::endProgram() { ended_ = true; }
+void Interpreter::endProgram() {
+  ended_ = true;
+}
 
 void Interpreter::returnFromSubprogram() {
   ProgramLevel& lvl = levels_.back();
   variable_count_ -= std::min(variable_count_, lvl.locals.size());
-  for (const auto& [name, var] : lvl.locals) element_count_ -= std::min(element_count_, var.data.size());
+  for (const auto& [name, var] : lvl.locals)
+    element_count_ -= std::min(element_count_, var.data.size());
   if (lvl.repeat_left > 0) {
     --lvl.repeat_left;
     lvl.locals.clear();
@@ -429,12 +452,14 @@ void Interpreter::callSubprogram(std::string_view name, long long repeat) {
           fmt::format("maximum subprogram level exceeded: {} program levels (--max-program-levels)",
                       options_.limits.max_program_levels));
   if (repeat < 1 || repeat > 9999)
-    raise(alarm_no::kValueRange, fmt::format("value range exceeded: P{} (pass count 1..9999)", repeat));
+    raise(alarm_no::kValueRange,
+          fmt::format("value range exceeded: P{} (pass count 1..9999)", repeat));
   LoadedProgram* prog = findProgram(name);
   if (!prog)
     raise(alarm_no::kProgramNotFound,
-          fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
-                      name, name, name));
+          fmt::format(
+              "program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
+              name, name, name));
   ProgramLevel lvl;
   lvl.program = prog;
   lvl.repeat_left = repeat - 1;
@@ -456,12 +481,13 @@ void Interpreter::define(const lang::Decl& d) {
   std::string name(d.name);
   if (lvl.locals.count(name) || globals_.count(name))
     raise(alarm_no::kAlreadyDefined, fmt::format("name {} defined several times", name));
-  if (name[0] == '$' || (name.size() >= 2 && name[0] == 'R' &&
-                         std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })))
+  if (name[0] == '$' ||
+      (name.size() >= 2 && name[0] == 'R' &&
+       std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })))
     raise(alarm_no::kSyntaxError, fmt::format("{} is a reserved name", name));
   if (variable_count_ >= options_.limits.max_variables)
-    raise(alarm_no::kTooManyVariables,
-          fmt::format("more than {} user variables (--max-variables)", options_.limits.max_variables));
+    raise(alarm_no::kTooManyVariables, fmt::format("more than {} user variables (--max-variables)",
+                                                   options_.limits.max_variables));
   UserVariable v;
   v.type = d.type;
   v.dims[0] = d.dims[0];
@@ -472,19 +498,21 @@ void Interpreter::define(const lang::Decl& d) {
     count = static_cast<size_t>(d.dims[0]) * static_cast<size_t>(d.dims[1] > 0 ? d.dims[1] : 1);
     if (count > options_.limits.max_array_elements ||
         element_count_ + count > options_.limits.max_total_elements)
-      raise(alarm_no::kArrayTooLarge,
-            fmt::format("array {} has {} elements: more than {} in one array (--max-array-elements) "
-                        "or {} in all (--max-total-elements)",
-                        name, count, options_.limits.max_array_elements,
-                        options_.limits.max_total_elements));
+      raise(
+          alarm_no::kArrayTooLarge,
+          fmt::format("array {} has {} elements: more than {} in one array (--max-array-elements) "
+                      "or {} in all (--max-total-elements)",
+                      name, count, options_.limits.max_array_elements,
+                      options_.limits.max_total_elements));
   }
   v.data.assign(count, initialValue(d.type));
   if (d.init >= 0) {
     v.data[0] = convertForStore(eval_.eval(block_, d.init), d.type, d.string_length, name);
   } else if (d.init_first >= 0) {
     if (static_cast<size_t>(d.init_count) > count && !d.init_rep)
-      raise(alarm_no::kArrayIndex1, fmt::format("illegal array index: {} values for {} elements of {}",
-                                                d.init_count, count, name));
+      raise(alarm_no::kArrayIndex1,
+            fmt::format("illegal array index: {} values for {} elements of {}", d.init_count, count,
+                        name));
     if (d.init_rep) {
       if (d.init_count != 1) raise(alarm_no::kWrongCallParams, "REP takes one value");
       Value x = convertForStore(eval_.eval(block_, block_.args[static_cast<size_t>(d.init_first)]),
@@ -492,9 +520,9 @@ void Interpreter::define(const lang::Decl& d) {
       std::fill(v.data.begin(), v.data.end(), x);
     } else {
       for (int k = 0; k < d.init_count; ++k)
-        v.data[static_cast<size_t>(k)] = convertForStore(
-            eval_.eval(block_, block_.args[static_cast<size_t>(d.init_first + k)]), d.type,
-            d.string_length, name);
+        v.data[static_cast<size_t>(k)] =
+            convertForStore(eval_.eval(block_, block_.args[static_cast<size_t>(d.init_first + k)]),
+                            d.type, d.string_length, name);
     }
   }
   element_count_ += count;
@@ -521,7 +549,8 @@ size_t Interpreter::elementIndex(const UserVariable& var, std::span<const Value>
   return flat;
 }
 
-bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool indexed, Value& out) {
+bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool indexed,
+                       Value& out) {
   if (UserVariable* v = findVariable(name)) {
     if (v->isArray()) {
       if (!indexed) {
@@ -560,7 +589,8 @@ void Interpreter::assign(const Stmt& st) {
     if (!axis.isText()) raise(alarm_no::kTypeMismatch, "AX[..] needs an axis name");
     if (axis.str != "X" && axis.str != "Y" && axis.str != "Z")
       raise(alarm_no::kNotModelled,
-            fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)", axis.str));
+            fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)",
+                        axis.str));
     static constexpr std::string_view kAxes[] = {"X", "Y", "Z"};
     word.name = kAxes[axis.str[0] - 'X'];
     const Node& rhs = block_.node(st.expr);
@@ -599,7 +629,8 @@ void Interpreter::store(const Node& target, const Value& v) {
   if (UserVariable* var = findVariable(target.text)) {
     size_t at = 0;
     if (var->isArray()) {
-      if (!indexed) raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", target.text));
+      if (!indexed)
+        raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", target.text));
       at = elementIndex(*var, idx, target.text);
     } else if (indexed) {
       raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", target.text));
@@ -615,10 +646,16 @@ void Interpreter::store(const Node& target, const Value& v) {
 namespace {
 void jsonValue(std::ostream& out, const Value& v) {
   switch (v.type) {
-    case lang::Type::Bool: out << (v.num != 0 ? "true" : "false"); break;
+    case lang::Type::Bool:
+      out << (v.num != 0 ? "true" : "false");
+      break;
     case lang::Type::Int:
-    case lang::Type::Char: out << fmt::format("{}", static_cast<long long>(v.num)); break;
-    case lang::Type::Real: out << fmt::format("{}", v.num); break;
+    case lang::Type::Char:
+      out << fmt::format("{}", static_cast<long long>(v.num));
+      break;
+    case lang::Type::Real:
+      out << fmt::format("{}", v.num);
+      break;
     case lang::Type::Frame: {
       const Frame& f = *v.frame;
       auto vec = [](Vec3 p) { return fmt::format("[{},{},{}]", p.x, p.y, p.z); };
@@ -631,9 +668,12 @@ void jsonValue(std::ostream& out, const Value& v) {
       out << '"';
       for (char c : v.str) {
         auto u = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\') out << '\\' << c;
-        else if (u < 0x20 || u >= 0x7f) out << fmt::format("\\u{:04x}", u);
-        else out << c;
+        if (c == '"' || c == '\\')
+          out << '\\' << c;
+        else if (u < 0x20 || u >= 0x7f)
+          out << fmt::format("\\u{:04x}", u);
+        else
+          out << c;
       }
       out << '"';
     }
@@ -675,15 +715,19 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
   }
   out << '}';
   // The active tool as the $P_TOOL.. system variables show it (docs/tool-offsets.md).
-  EffectiveLengths l = edge_.valid ? effectiveLengths(edge_.data, edge_.settings) : EffectiveLengths{};
+  EffectiveLengths l =
+      edge_.valid ? effectiveLengths(edge_.data, edge_.settings) : EffectiveLengths{};
   Vec3 o;
-  if (edge_.valid) o = toolOrientation(edge_.data, edge_.settings, modal_.plane, edge_.mirrored);
-  else o[planeAxes(modal_.plane).applicate] = 1;
+  if (edge_.valid)
+    o = toolOrientation(edge_.data, edge_.settings, modal_.plane, edge_.mirrored);
+  else
+    o[planeAxes(modal_.plane).applicate] = 1;
   Vec3 len = toolOffset();
-  out << fmt::format(", \"$P_TOOLNO\": {}, \"$P_TOOL\": {}, \"$P_TOOLL\": [{},{},{}], \"$P_TOOLR\": {}, "
-                     "\"$P_TOOLO\": [{},{},{}], \"$TOOL_LENGTH_BCS\": [{},{},{}]",
-                     active_tool_, active_edge_, l.total[0], l.total[1], l.total[2], l.radius,
-                     o.x + 0.0, o.y + 0.0, o.z + 0.0, len.x + 0.0, len.y + 0.0, len.z + 0.0);
+  out << fmt::format(
+      ", \"$P_TOOLNO\": {}, \"$P_TOOL\": {}, \"$P_TOOLL\": [{},{},{}], \"$P_TOOLR\": {}, "
+      "\"$P_TOOLO\": [{},{},{}], \"$TOOL_LENGTH_BCS\": [{},{},{}]",
+      active_tool_, active_edge_, l.total[0], l.total[1], l.total[2], l.radius, o.x + 0.0,
+      o.y + 0.0, o.z + 0.0, len.x + 0.0, len.y + 0.0, len.z + 0.0);
   // Smooth approach: P3 and P4 of the last evaluated approach (WCS), $P_APDV.
   const Vec3 apr = sar_.apr(), aep = sar_.aep();
   out << fmt::format(", \"$P_APR\": [{},{},{}], \"$P_AEP\": [{},{},{}], \"$P_APDV\": {}",

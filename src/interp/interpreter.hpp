@@ -54,7 +54,9 @@ class Interpreter final : public lang::Environment {
   void run(LoadedProgram& program, bool init_file);
   LoadedProgram& load(std::shared_ptr<lang::SourceFile> source);
   SourceLoc alarmLoc(const AlarmError& e) const;
-  const std::string& fileName(int id) const { return files_[static_cast<size_t>(id)]->source->name(); }
+  const std::string& fileName(int id) const {
+    return files_[static_cast<size_t>(id)]->source->name();
+  }
   void writeVariablesJson(std::ostream& out) const;
   void setSearchDir(std::filesystem::path dir) { search_dir_ = std::move(dir); }
 
@@ -121,9 +123,9 @@ class Interpreter final : public lang::Environment {
   place::Placement placement_;
   trc::RadiusCompensation trc_;
   trc::SmoothApproach sar_;
-  SarRequest sar_request_;                 // of the current block (MotionBlock::sar points here)
-  double feed_before_ = 0;                 // the modal feed before the current block
-  Motion motion_before_ = Motion::G0;      // the modal G0..G3 before the current block
+  SarRequest sar_request_;             // of the current block (MotionBlock::sar points here)
+  double feed_before_ = 0;             // the modal feed before the current block
+  Motion motion_before_ = Motion::G0;  // the modal G0..G3 before the current block
   PathSink& sink_;
   lang::Evaluator eval_;
   MachineData data_;
@@ -161,8 +163,8 @@ class Interpreter final : public lang::Environment {
   Frame pframe_;
   Affine act_;
   Affine act_inverse_;
-  place::MotionBlock motion_;  // doMotion's block (reused, see there)
-  bool act_identity_ = true;  // act_ is exactly the identity: doMotion skips the products
+  place::MotionBlock motion_;          // doMotion's block (reused, see there)
+  bool act_identity_ = true;           // act_ is exactly the identity: doMotion skips the products
   unsigned long long act_serial_ = 1;  // counts the changes of act_ (MotionBlock::frame_serial)
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;

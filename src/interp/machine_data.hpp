@@ -33,7 +33,9 @@ class MachineData {
   double get(int id) const { return values_[static_cast<size_t>(id)]; }
   // Axis machine data ($MA_NAME[X]): one value per geometry axis (0 = X, 1 = Y, 2 = Z).
   bool isAxisData(int id) const { return spec(id).cls == DataClass::AxisMd; }
-  double get(int id, int axis) const { return axis_values_[static_cast<size_t>(id)][static_cast<size_t>(axis)]; }
+  double get(int id, int axis) const {
+    return axis_values_[static_cast<size_t>(id)][static_cast<size_t>(axis)];
+  }
   void set(int id, int axis, double value);
   double get(std::string_view name) const;
   // Throws 12550 / 12160 / 99013.

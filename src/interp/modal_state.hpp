@@ -18,25 +18,25 @@ enum class Units { G71, G70, G710, G700 };
 enum class FeedType { G93, G94, G95, G96, G97 };
 
 struct ModalState {
-  Motion motion = Motion::G0;        // group 1 (initial G0 per common machine data)
-  Plane plane = Plane::G17;          // group 6
-  bool incremental = false;          // group 14: G90 / G91
-  Units units = Units::G71;          // group 13
-  int trc = 40;                      // group 7: 40, 41, 42
+  Motion motion = Motion::G0;  // group 1 (initial G0 per common machine data)
+  Plane plane = Plane::G17;    // group 6
+  bool incremental = false;    // group 14: G90 / G91
+  Units units = Units::G71;    // group 13
+  int trc = 40;                // group 7: 40, 41, 42
   CornerMode corner = CornerMode::TransitionCircle;
   Approach approach = Approach::Norm;
   CollisionCheck collision = CollisionCheck::Cdof;
-  int sar_side = 140;                // group 43: G140..G143
-  int sar_plane = 340;               // group 44: G340/G341
-  int trc_strategy = 460;            // group 48: G460..G462
-  int frame_select = 500;            // group 8: 500, 54..57, 505..599
+  int sar_side = 140;      // group 43: G140..G143
+  int sar_plane = 340;     // group 44: G340/G341
+  int trc_strategy = 460;  // group 48: G460..G462
+  int frame_select = 500;  // group 8: 500, 54..57, 505..599
   FeedType feed_type = FeedType::G94;
-  int exact_stop = 64;               // group 10: G60/G64/G641..
-  double feed = 0;                   // F in mm/min (G94) as the control holds it
-  double disc = 0;                   // DISC=
-  double offn = 0;                   // OFFN=
-  int tool = 0;                      // T
-  int edge = 0;                      // D
+  int exact_stop = 64;  // group 10: G60/G64/G641..
+  double feed = 0;      // F in mm/min (G94) as the control holds it
+  double disc = 0;      // DISC=
+  double offn = 0;      // OFFN=
+  int tool = 0;         // T
+  int edge = 0;         // D
 };
 
 // Words of one block, collected before execution (their order inside a block does not matter
@@ -52,21 +52,21 @@ struct BlockWords {
                                    lang::AxisMode::Default};
   std::optional<double> cr, ar, rpl;
   std::optional<int> turn;
-  bool motion_word = false;   // G0..G3 in this block
-  bool dwell = false;         // G4
-  int suppress_frames = 0;    // 53, 153 or 1 (SUPA)
-  bool frame_select = false;  // G500/G54.. in this block
-  int axial_offset = 0;       // 58 / 59
+  bool motion_word = false;        // G0..G3 in this block
+  bool dwell = false;              // G4
+  int suppress_frames = 0;         // 53, 153 or 1 (SUPA)
+  bool frame_select = false;       // G500/G54.. in this block
+  int axial_offset = 0;            // 58 / 59
   std::string_view frame_command;  // TRANS, ATRANS, ROT, ... (views the block's text)
   std::optional<double> f;
-  bool end_program = false;   // M2 / M30
-  bool end_subprogram = false;  // M17 / RET
-  std::optional<int> tool;    // T (number; a T="name" is resolved when collected)
-  std::optional<int> edge;    // D
-  bool tool_change = false;   // M6 (MD22560) for the master spindle
-  std::string_view call;      // subprogram to call at block end (block text or call_name_)
+  bool end_program = false;         // M2 / M30
+  bool end_subprogram = false;      // M17 / RET
+  std::optional<int> tool;          // T (number; a T="name" is resolved when collected)
+  std::optional<int> edge;          // D
+  bool tool_change = false;         // M6 (MD22560) for the master spindle
+  std::string_view call;            // subprogram to call at block end (block text or call_name_)
   std::optional<long long> repeat;  // P
-  int sar = 0;                // G147..G348 (smooth approach / retraction) in this block
+  int sar = 0;                      // G147..G348 (smooth approach / retraction) in this block
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;
   int column = 0;

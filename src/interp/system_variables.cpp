@@ -25,7 +25,9 @@ int axisOf(const Value& v) {
   raise(alarm_no::kTypeMismatch, "an axis name (X, Y, Z) is expected");
 }
 
-Value frameValue(const Frame& f) { return {Type::Frame, 0, {}, std::make_shared<Frame>(f)}; }
+Value frameValue(const Frame& f) {
+  return {Type::Frame, 0, {}, std::make_shared<Frame>(f)};
+}
 
 const Frame& asFrame(const Value& v, std::string_view what) {
   if (v.type != Type::Frame || !v.frame)
@@ -60,9 +62,12 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
     return &uifr_[static_cast<size_t>(n)];
   }
   Frame* f = nullptr;
-  if (name == "$P_PFRAME") f = &pframe_;
-  else if (name == "$P_IFRAME") f = &iframe_;
-  else return nullptr;
+  if (name == "$P_PFRAME")
+    f = &pframe_;
+  else if (name == "$P_IFRAME")
+    f = &iframe_;
+  else
+    return nullptr;
   if (indexed && idx.size() != 2)
     raise(alarm_no::kArrayIndex1, fmt::format("{} needs no index or [axis,component]", name));
   whole = !indexed;
@@ -73,7 +78,8 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
                              Value& out) {
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
-      if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+      if (!indexed || idx.size() != 1)
+        raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
       out = Value::real(data_.get(id, axisOf(idx[0])));
       return true;
     }
@@ -86,7 +92,8 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   if (readTool(name, idx, indexed, out)) return true;
   if (name == "$P_APR" || name == "$P_AEP") {
     // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
-    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+    if (!indexed || idx.size() != 1)
+      raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
     out = Value::real((name == "$P_APR" ? sar_.apr() : sar_.aep())[axisOf(idx[0])]);
     return true;
   }
@@ -136,7 +143,8 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
                               const Value& v) {
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
-      if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+      if (!indexed || idx.size() != 1)
+        raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
       data_.set(id, axisOf(idx[0]), lang::toNumber(v, "machine data"));
       return;
     }
@@ -167,7 +175,8 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     std::string comp = lang::toText(idx[base + 1]);
     double x = lang::toNumber(v, "frame component");
     if (!(std::fabs(x) <= 1e9) || ((comp == "RT" || comp == "SC") && !(std::fabs(x) <= 1e6)))
-      raise(alarm_no::kValueRange, fmt::format("value range exceeded: {}[..,{}] = {}", name, comp, x));
+      raise(alarm_no::kValueRange,
+            fmt::format("value range exceeded: {}[..,{}] = {}", name, comp, x));
     if (comp == "MI") {
       f->mirror[static_cast<size_t>(ax)] = x != 0;
     } else {
@@ -185,18 +194,23 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
 Value Interpreter::call(std::string_view name, std::span<const Value> args) {
   if (name == "CTRANS" || name == "CFINE" || name == "CROT" || name == "CSCALE") {
     if (args.size() % 2 != 0)
-      raise(alarm_no::kWrongCallParams,
-            fmt::format("wrong number of parameters in call of {}: axis/value pairs expected", name));
+      raise(
+          alarm_no::kWrongCallParams,
+          fmt::format("wrong number of parameters in call of {}: axis/value pairs expected", name));
     Frame f;
     Vec3 angles;
     for (size_t k = 0; k < args.size(); k += 2) {
       int ax = axisOf(args[k]);
       double x = lang::toNumber(args[k + 1], "frame value");
-      if (name == "CTRANS") f.coarse[ax] = toMm(x);
-      else if (name == "CFINE") f.fine[ax] = toMm(x);
-      else if (name == "CROT") angles[ax] = x;
+      if (name == "CTRANS")
+        f.coarse[ax] = toMm(x);
+      else if (name == "CFINE")
+        f.fine[ax] = toMm(x);
+      else if (name == "CROT")
+        angles[ax] = x;
       else {
-        if (std::fabs(x) < 1e-12) raise(alarm_no::kValueRange, "value range exceeded: scale factor 0");
+        if (std::fabs(x) < 1e-12)
+          raise(alarm_no::kValueRange, "value range exceeded: scale factor 0");
         f.scale[ax] = x;
       }
     }
@@ -211,8 +225,8 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
   if (name == "MSG") {
     if (args.size() > 2) raise(alarm_no::kWrongCallParams, "MSG takes one text");
     sink_.message({fileName(file_), line_}, args.empty() || args[0].type == Type::Empty
-                                                 ? std::string()
-                                                 : lang::toText(args[0]));
+                                                ? std::string()
+                                                : lang::toText(args[0]));
     return Value::empty();
   }
   if (name == "CHANDATA") {

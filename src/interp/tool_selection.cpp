@@ -58,14 +58,16 @@ bool parseToolVariable(std::string_view name, std::span<const Value> idx, bool i
   const int n = out.n;
   if (k == "TP" || k == "TPC") {
     if (n < 1 || n > 20) return false;
-    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T]", name));
+    if (!indexed || idx.size() != 1)
+      raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T]", name));
     out.t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
     return true;
   }
   bool edge = (k == "DP" && n >= 1 && n <= 25) || (k == "DPV" && (n == 0 || (n >= 3 && n <= 5))) ||
               (k == "DPVN" && n >= 3 && n <= 5) || (k == "DPC" && n >= 1 && n <= 10);
   if (!edge) return false;
-  if (!indexed || idx.size() != 2) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T,D]", name));
+  if (!indexed || idx.size() != 2)
+    raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T,D]", name));
   out.t = wholeIndex(idx[0], 1, tool::kMaxTool, alarm_no::kArrayIndex1, "T");
   out.d = wholeIndex(idx[1], 1, tool::kMaxEdge, alarm_no::kArrayIndex2, "D");
   return true;
@@ -87,8 +89,10 @@ void Interpreter::executeToolWords() {
     int t = *words_.tool;
     if (t != 0 && !tools_.tool(t))
       raise(alarm_no::kToolNotExisting, fmt::format("T= {} not existing", t));
-    if (change_on_t) changeTool(t, words_.edge.has_value());
-    else preselected_tool_ = t;  // MD22550 = 1: T preselects, M6 changes
+    if (change_on_t)
+      changeTool(t, words_.edge.has_value());
+    else
+      preselected_tool_ = t;  // MD22550 = 1: T preselects, M6 changes
   }
   if (words_.tool_change && !change_on_t && preselected_tool_ >= 0) {
     changeTool(preselected_tool_, words_.edge.has_value());
@@ -143,8 +147,14 @@ Vec3 Interpreter::toolOffset() const {
 
 bool Interpreter::readTool(std::string_view name, std::span<const Value> idx, bool indexed,
                            Value& out) {
-  if (name == "$P_TOOLNO") { out = Value::integer(active_tool_); return true; }
-  if (name == "$P_TOOL") { out = Value::integer(active_edge_); return true; }
+  if (name == "$P_TOOLNO") {
+    out = Value::integer(active_tool_);
+    return true;
+  }
+  if (name == "$P_TOOL") {
+    out = Value::integer(active_edge_);
+    return true;
+  }
   if (name == "$P_TOOLP") {
     out = Value::integer(preselected_tool_ >= 0 ? preselected_tool_ : active_tool_);
     return true;
@@ -154,13 +164,18 @@ bool Interpreter::readTool(std::string_view name, std::span<const Value> idx, bo
     return true;
   }
   if (name == "$P_TOOLL" || name == "$P_TOOLO") {
-    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, fmt::format("{} needs [1..3]", name));
+    if (!indexed || idx.size() != 1)
+      raise(alarm_no::kArrayIndex1, fmt::format("{} needs [1..3]", name));
     int k = wholeIndex(idx[0], 1, 3, alarm_no::kArrayIndex1, "index");
     if (name == "$P_TOOLL") {
-      out = Value::real(edge_.valid ? effectiveLengths(edge_.data, edge_.settings).total[static_cast<size_t>(k - 1)] : 0.0);
+      out = Value::real(
+          edge_.valid
+              ? effectiveLengths(edge_.data, edge_.settings).total[static_cast<size_t>(k - 1)]
+              : 0.0);
     } else {
-      Vec3 o = edge_.valid ? toolOrientation(edge_.data, edge_.settings, modal_.plane, edge_.mirrored)
-                           : Vec3{};
+      Vec3 o = edge_.valid
+                   ? toolOrientation(edge_.data, edge_.settings, modal_.plane, edge_.mirrored)
+                   : Vec3{};
       if (!edge_.valid) o[planeAxes(modal_.plane).applicate] = 1;
       out = Value::real(o[k - 1]);
     }
@@ -185,9 +200,12 @@ bool Interpreter::readTool(std::string_view name, std::span<const Value> idx, bo
   }
   const EdgeData* e = tools_.edge(t, d);
   if (!e) edgeMissing(t, d);
-  if (kind == "DP") out = Value::real(e->dp[static_cast<size_t>(n)]);
-  else if (kind == "DPV" && n == 0) out = Value::integer(e->dpv);
-  else if (kind == "DPV") out = Value::real(n == 3 ? e->dpv3 : n == 4 ? e->dpv4 : e->dpv5);
+  if (kind == "DP")
+    out = Value::real(e->dp[static_cast<size_t>(n)]);
+  else if (kind == "DPV" && n == 0)
+    out = Value::integer(e->dpv);
+  else if (kind == "DPV")
+    out = Value::real(n == 3 ? e->dpv3 : n == 4 ? e->dpv4 : e->dpv5);
   else {
     const tool::Tool* tool = tools_.tool(t);
     const auto& m = kind == "DPC" ? tool->edge_user : tool->edge_normal;
@@ -208,24 +226,29 @@ bool Interpreter::writeTool(std::string_view name, std::span<const Value> idx, b
   const int n = var.n, t = var.t, d = var.d;
   if (kind == "TP" || kind == "TPC") {
     tool::Tool& tool = tools_.toolForWrite(t);
-    if (kind == "TP" && n == 2) tool.name[2] = lang::toText(v);
-    else (kind == "TP" ? tool.tp : tool.tpc)[n] = lang::toNumber(v, "tool parameter");
+    if (kind == "TP" && n == 2)
+      tool.name[2] = lang::toText(v);
+    else
+      (kind == "TP" ? tool.tp : tool.tpc)[n] = lang::toNumber(v, "tool parameter");
     return true;
   }
   double x = lang::toNumber(v, "tool parameter");
   if (!(std::fabs(x) <= 1e9) || (kind == "DP" && n == 1 && !(x >= 0 && x <= 9999)) ||
       (kind == "DP" && n == 2 && !(x >= 0 && x <= 9)))
-    raise(alarm_no::kValueRange, fmt::format("value range exceeded: {}[{},{}] = {}", name, t, d, x));
+    raise(alarm_no::kValueRange,
+          fmt::format("value range exceeded: {}[{},{}] = {}", name, t, d, x));
   if (!tools_.edge(t, d)) {
     if (tool_edges_ >= options_.limits.max_tool_edges)
       raise(alarm_no::kTooManyVariables,
-            fmt::format("more than {} cutting edges in the tool offset memory", options_.limits.max_tool_edges));
+            fmt::format("more than {} cutting edges in the tool offset memory",
+                        options_.limits.max_tool_edges));
     ++tool_edges_;
   }
   EdgeData& e = tools_.edgeForWrite(t, d);
   if (kind == "DP") {
     if ((n == 1 || n == 2) && x != std::floor(x))
-      raise(alarm_no::kValueRange, fmt::format("value range exceeded: {} = {} must be whole", name, x));
+      raise(alarm_no::kValueRange,
+            fmt::format("value range exceeded: {} = {} must be whole", name, x));
     e.dp[static_cast<size_t>(n)] = x;
   } else if (kind == "DPV" && n == 0) {
     e.dpv = static_cast<int>(lang::roundToInt(x));
@@ -248,8 +271,9 @@ Value Interpreter::callLentoax(std::span<const Value> args) {
     UserVariable* var = findVariable(v.str);
     if (!var || var->type != type || var->dims[0] != rows || var->dims[1] != cols)
       raise(alarm_no::kWrongCallParams,
-            fmt::format("LENTOAX: {} must be DEF {} {}[{}]", what, type == lang::VarType::Int ? "INT" : "REAL",
-                        v.str, cols ? fmt::format("{},{}", rows, cols) : fmt::format("{}", rows)));
+            fmt::format("LENTOAX: {} must be DEF {} {}[{}]", what,
+                        type == lang::VarType::Int ? "INT" : "REAL", v.str,
+                        cols ? fmt::format("{},{}", rows, cols) : fmt::format("{}", rows)));
     return var;
   };
   UserVariable* axind = array(args[0], lang::VarType::Int, 3, 0, "_AXIND");
@@ -262,7 +286,8 @@ Value Interpreter::callLentoax(std::span<const Value> args) {
   }
   LentoaxResult r;
   std::string upper;
-  for (char c : coord) upper.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+  for (char c : coord)
+    upper.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
   bool known = upper == "WCS" || upper == "W" || upper == "MCS" || upper == "M" || upper == "BCS" ||
                upper == "B" || upper == "KCS" || upper == "K" || upper == "TCS" || upper == "T";
   if (!known) return Value::integer(-1);

@@ -16,26 +16,40 @@ using lang::VarType;
 
 const char* varTypeName(VarType t) {
   switch (t) {
-    case VarType::Int: return "INT";
-    case VarType::Real: return "REAL";
-    case VarType::Bool: return "BOOL";
-    case VarType::String: return "STRING";
-    case VarType::Char: return "CHAR";
-    case VarType::Axis: return "AXIS";
-    case VarType::Frame: return "FRAME";
+    case VarType::Int:
+      return "INT";
+    case VarType::Real:
+      return "REAL";
+    case VarType::Bool:
+      return "BOOL";
+    case VarType::String:
+      return "STRING";
+    case VarType::Char:
+      return "CHAR";
+    case VarType::Axis:
+      return "AXIS";
+    case VarType::Frame:
+      return "FRAME";
   }
   return "?";
 }
 
 Value initialValue(VarType t) {
   switch (t) {
-    case VarType::Int: return Value::integer(0);
-    case VarType::Real: return Value::real(0);
-    case VarType::Bool: return Value::boolean(false);
-    case VarType::Char: return {Type::Char, 0, {}, {}};
-    case VarType::String: return Value::string({});
-    case VarType::Axis: return {Type::Axis, 0, "X", {}};
-    case VarType::Frame: return {Type::Frame, 0, {}, std::make_shared<Frame>()};
+    case VarType::Int:
+      return Value::integer(0);
+    case VarType::Real:
+      return Value::real(0);
+    case VarType::Bool:
+      return Value::boolean(false);
+    case VarType::Char:
+      return {Type::Char, 0, {}, {}};
+    case VarType::String:
+      return Value::string({});
+    case VarType::Axis:
+      return {Type::Axis, 0, "X", {}};
+    case VarType::Frame:
+      return {Type::Frame, 0, {}, std::make_shared<Frame>()};
   }
   return Value::real(0);
 }
@@ -51,7 +65,8 @@ Value convertForStore(const Value& v, VarType t, int string_length, std::string_
     case VarType::Int:
       if (!v.isNumeric()) return mismatch();
       if (std::fabs(v.num) > 2147483647.0)
-        raise(alarm_no::kValueRange, fmt::format("value range exceeded: {} does not fit INT {}", v.num, name));
+        raise(alarm_no::kValueRange,
+              fmt::format("value range exceeded: {} does not fit INT {}", v.num, name));
       return Value::integer(lang::roundToInt(v.num) + 0.0);
     case VarType::Real:
       if (!v.isNumeric()) return mismatch();
@@ -62,7 +77,8 @@ Value convertForStore(const Value& v, VarType t, int string_length, std::string_
     case VarType::Char:
       if (v.isNumeric()) {
         if (!(v.num >= 0 && v.num <= 255))
-          raise(alarm_no::kValueRange, fmt::format("value range exceeded: {} does not fit CHAR {} (0..255)", v.num, name));
+          raise(alarm_no::kValueRange,
+                fmt::format("value range exceeded: {} does not fit CHAR {} (0..255)", v.num, name));
         return {Type::Char, lang::roundToInt(v.num), {}, {}};
       }
       if (v.type == Type::String && v.str.size() == 1)
@@ -72,9 +88,10 @@ Value convertForStore(const Value& v, VarType t, int string_length, std::string_
       if (v.type == Type::Frame || v.type == Type::Empty) return mismatch();
       std::string s = lang::toText(v);
       if (static_cast<int>(s.size()) > string_length)
-        raise(alarm_no::kValueRange,
-              fmt::format("value range exceeded: string of {} characters does not fit STRING[{}] {}",
-                          s.size(), string_length, name));
+        raise(
+            alarm_no::kValueRange,
+            fmt::format("value range exceeded: string of {} characters does not fit STRING[{}] {}",
+                        s.size(), string_length, name));
       return Value::string(std::move(s));
     }
     case VarType::Axis:

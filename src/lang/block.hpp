@@ -11,24 +11,45 @@
 namespace ncoffset::lang {
 
 enum class NodeKind : std::uint8_t {
-  Number,   // numeric literal (value in `number`; `is_int` when written without a point)
-  Bool,     // TRUE / FALSE
-  String,   // "text" (text without quotes)
-  Name,     // identifier: variable, or a symbol such as an axis name in `$P_UIFR[1,X,TR]`
-  Index,    // name[args]
-  Call,     // name(args)
-  RParam,   // R<n> with n in `number`
-  RIndex,   // R[expr] (args: one)
+  Number,  // numeric literal (value in `number`; `is_int` when written without a point)
+  Bool,    // TRUE / FALSE
+  String,  // "text" (text without quotes)
+  Name,    // identifier: variable, or a symbol such as an axis name in `$P_UIFR[1,X,TR]`
+  Index,   // name[args]
+  Call,    // name(args)
+  RParam,  // R<n> with n in `number`
+  RIndex,  // R[expr] (args: one)
   Unary,
   Binary,
   BlockNo,  // jump target N<n> or :<n>, number in `number`
 };
 
 enum class Op : std::uint8_t {
-  None, Neg, Plus, Not, BNot,
-  Add, Sub, Mul, Div, IntDiv, Mod,
-  BAnd, BXor, BOr, And, Xor, Or, Concat,
-  Eq, Ne, Lt, Gt, Le, Ge, Chain,
+  None,
+  Neg,
+  Plus,
+  Not,
+  BNot,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  IntDiv,
+  Mod,
+  BAnd,
+  BXor,
+  BOr,
+  And,
+  Xor,
+  Or,
+  Concat,
+  Eq,
+  Ne,
+  Lt,
+  Gt,
+  Le,
+  Ge,
+  Chain,
 };
 
 struct Node {
@@ -44,12 +65,12 @@ struct Node {
 enum class AxisMode : std::uint8_t { Default, AC, IC };
 
 enum class StmtKind : std::uint8_t {
-  Word,     // address word: X10, X=R1, G1, M2=6, T="NAME", CR=5, DISC=50
-  Assign,   // R1=5, VAR[1]=2, $TC_DP1[1,1]=120, $SC_NAME=1, SD42940=17
-  Keyword,  // DEF, IF, ELSE, ..., GOTOF, TRANS, NORM, STOPRE, RET, ...
-  CaseArm,  // CASE arm: `value GOTOF target` (expr = -1 for DEFAULT)
-  Call,     // bare name: subprogram call (or L123)
-  ProcCall, // NAME(args) as a statement: MSG(..), CHANDATA(..), predefined procedures
+  Word,      // address word: X10, X=R1, G1, M2=6, T="NAME", CR=5, DISC=50
+  Assign,    // R1=5, VAR[1]=2, $TC_DP1[1,1]=120, $SC_NAME=1, SD42940=17
+  Keyword,   // DEF, IF, ELSE, ..., GOTOF, TRANS, NORM, STOPRE, RET, ...
+  CaseArm,   // CASE arm: `value GOTOF target` (expr = -1 for DEFAULT)
+  Call,      // bare name: subprogram call (or L123)
+  ProcCall,  // NAME(args) as a statement: MSG(..), CHANDATA(..), predefined procedures
 };
 
 struct Stmt {
@@ -62,10 +83,10 @@ struct Stmt {
   int jump = 0;           // CaseArm / IF: 1 GOTOF, 2 GOTOB, 3 GOTO, 4 GOTOC
   AxisMode mode = AxisMode::Default;
   bool has_equals = false;
-  bool literal = false;   // Word with a plain number (X10): value in literal_value, expr = -1
+  bool literal = false;  // Word with a plain number (X10): value in literal_value, expr = -1
   bool literal_int = false;
   double literal_value = 0;
-  int column = 0;         // 1-based column of the statement
+  int column = 0;  // 1-based column of the statement
 };
 
 // Variable declaration from DEF.
@@ -84,17 +105,17 @@ struct Decl {
 
 struct Block {
   int line = 0;
-  bool skip = false;          // "/" skippable block
+  bool skip = false;  // "/" skippable block
   int skip_level = 0;
-  bool has_number = false;    // N<no> or :<no>
+  bool has_number = false;  // N<no> or :<no>
   long long number = 0;
-  std::string_view label;     // "LABEL:" (without the colon)
+  std::string_view label;  // "LABEL:" (without the colon)
   std::vector<Stmt> stmts;
   std::vector<Node> nodes;
   std::vector<int> args;
   std::vector<Decl> decls;
-  std::string buffer;         // upper-cased copy of the line that the views point into (it
-                              // only grows: the line is its beginning, ended by a '\0')
+  std::string buffer;  // upper-cased copy of the line that the views point into (it
+                       // only grows: the line is its beginning, ended by a '\0')
 
   void clear() {
     line = 0;

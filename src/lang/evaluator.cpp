@@ -13,10 +13,10 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kIntMax = 2147483647.0;
 
-
 void checkFinite(double v, const char* what) {
   if (!std::isfinite(v))
-    raise(alarm_no::kArithmetic, fmt::format("arithmetic error in part program: {} gives no finite number", what));
+    raise(alarm_no::kArithmetic,
+          fmt::format("arithmetic error in part program: {} gives no finite number", what));
 }
 
 Value numeric(Type t, double v, const char* what) {
@@ -37,16 +37,26 @@ int64_t bitOperand(double v) {
 
 const char* typeName(Type t) {
   switch (t) {
-    case Type::Int: return "INT";
-    case Type::Real: return "REAL";
-    case Type::Bool: return "BOOL";
-    case Type::Char: return "CHAR";
-    case Type::String: return "STRING";
-    case Type::Axis: return "AXIS";
-    case Type::Frame: return "FRAME";
-    case Type::Symbol: return "name";
-    case Type::ArrayRef: return "array";
-    case Type::Empty: return "empty";
+    case Type::Int:
+      return "INT";
+    case Type::Real:
+      return "REAL";
+    case Type::Bool:
+      return "BOOL";
+    case Type::Char:
+      return "CHAR";
+    case Type::String:
+      return "STRING";
+    case Type::Axis:
+      return "AXIS";
+    case Type::Frame:
+      return "FRAME";
+    case Type::Symbol:
+      return "name";
+    case Type::ArrayRef:
+      return "array";
+    case Type::Empty:
+      return "empty";
   }
   return "?";
 }
@@ -62,24 +72,33 @@ double toNumber(const Value& v, const char* what) {
                     typeName(v.type)));
 }
 
-bool toBool(const Value& v) { return toNumber(v, "condition") != 0; }
+bool toBool(const Value& v) {
+  return toNumber(v, "condition") != 0;
+}
 
 std::string toText(const Value& v) {
   switch (v.type) {
     case Type::String:
     case Type::Axis:
-    case Type::Symbol: return v.str;
-    case Type::Bool: return v.num != 0 ? "TRUE" : "FALSE";
-    case Type::Int: return fmt::format("{}", static_cast<long long>(v.num));
-    case Type::Char: return std::string(1, static_cast<char>(v.num));
-    case Type::Real: return fmt::format("{}", v.num);
+    case Type::Symbol:
+      return v.str;
+    case Type::Bool:
+      return v.num != 0 ? "TRUE" : "FALSE";
+    case Type::Int:
+      return fmt::format("{}", static_cast<long long>(v.num));
+    case Type::Char:
+      return std::string(1, static_cast<char>(v.num));
+    case Type::Real:
+      return fmt::format("{}", v.num);
     default:
       raise(alarm_no::kTypeMismatch,
             fmt::format("operation not compatible with data type {}", typeName(v.type)));
   }
 }
 
-double roundToInt(double v) { return std::round(v); }
+double roundToInt(double v) {
+  return std::round(v);
+}
 
 bool realEqual(double a, double b) {
   if (a == b) return true;
@@ -87,7 +106,9 @@ bool realEqual(double a, double b) {
   return std::fabs(a - b) <= 1e-12 * scale;
 }
 
-double Evaluator::number(const Block& b, int n) { return toNumber(eval(b, n)); }
+double Evaluator::number(const Block& b, int n) {
+  return toNumber(eval(b, n));
+}
 
 void Evaluator::evalArgs(const Block& b, const Node& node, std::vector<Value>& out) {
   out.clear();
@@ -116,11 +137,15 @@ Value Evaluator::eval(const Block& b, int n) {
   switch (node.kind) {
     case NodeKind::Number:
       return node.is_int && std::fabs(node.number) <= kIntMax ? Value::integer(node.number)
-                                                               : Value::real(node.number);
-    case NodeKind::Bool: return Value::boolean(node.number != 0);
-    case NodeKind::String: return Value::string(std::string(node.text));
-    case NodeKind::BlockNo: return Value::integer(node.number);
-    case NodeKind::RParam: return env_.readR(node.number);
+                                                              : Value::real(node.number);
+    case NodeKind::Bool:
+      return Value::boolean(node.number != 0);
+    case NodeKind::String:
+      return Value::string(std::string(node.text));
+    case NodeKind::BlockNo:
+      return Value::integer(node.number);
+    case NodeKind::RParam:
+      return env_.readR(node.number);
     case NodeKind::RIndex: {
       if (node.b != 1) raise(alarm_no::kSyntaxError, "R[..] takes one index");
       return env_.readR(roundToInt(number(b, b.arg(node, 0))));
@@ -153,11 +178,15 @@ Value Evaluator::eval(const Block& b, int n) {
       switch (node.op) {
         case Op::Neg:
           return numeric(v.type == Type::Int ? Type::Int : Type::Real, -toNumber(v), "negation");
-        case Op::Plus: return numeric(v.type == Type::Int ? Type::Int : Type::Real, toNumber(v), "+");
-        case Op::Not: return Value::boolean(!toBool(v));
+        case Op::Plus:
+          return numeric(v.type == Type::Int ? Type::Int : Type::Real, toNumber(v), "+");
+        case Op::Not:
+          return Value::boolean(!toBool(v));
         case Op::BNot:
-          return Value::integer(static_cast<double>(~static_cast<int32_t>(bitOperand(toNumber(v)))));
-        default: break;
+          return Value::integer(
+              static_cast<double>(~static_cast<int32_t>(bitOperand(toNumber(v)))));
+        default:
+          break;
       }
       raise(alarm_no::kSyntaxError, "bad unary operator");
     }
@@ -177,7 +206,8 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
     bool eq;
     if (l.isText() || r.isText()) {
       if (!(l.isText() && r.isText()))
-        raise(alarm_no::kTypeMismatch, "operation not compatible with data type: comparing text with a number");
+        raise(alarm_no::kTypeMismatch,
+              "operation not compatible with data type: comparing text with a number");
       eq = l.str == r.str;
     } else {
       eq = realEqual(toNumber(l), toNumber(r));
@@ -189,14 +219,19 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
               (r.type == Type::Int || r.type == Type::Bool || r.type == Type::Char);
   Type nt = ints ? Type::Int : Type::Real;
   switch (op) {
-    case Op::Add: return numeric(nt, a + c, "+");
-    case Op::Sub: return numeric(nt, a - c, "-");
-    case Op::Mul: return numeric(nt, a * c, "*");
+    case Op::Add:
+      return numeric(nt, a + c, "+");
+    case Op::Sub:
+      return numeric(nt, a - c, "-");
+    case Op::Mul:
+      return numeric(nt, a * c, "*");
     case Op::Div:
-      if (c == 0) raise(alarm_no::kArithmetic, "arithmetic error in part program: division by zero");
+      if (c == 0)
+        raise(alarm_no::kArithmetic, "arithmetic error in part program: division by zero");
       return numeric(Type::Real, a / c, "/");
     case Op::IntDiv:
-      if (std::trunc(c) == 0) raise(alarm_no::kArithmetic, "arithmetic error in part program: DIV by zero");
+      if (std::trunc(c) == 0)
+        raise(alarm_no::kArithmetic, "arithmetic error in part program: DIV by zero");
       return numeric(Type::Int, std::trunc(a / c), "DIV");
     case Op::Mod:
       if (c == 0) raise(alarm_no::kArithmetic, "arithmetic error in part program: MOD by zero");
@@ -208,14 +243,22 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
       int64_t z = op == Op::BAnd ? (x & y) : op == Op::BOr ? (x | y) : (x ^ y);
       return Value::integer(static_cast<double>(z));
     }
-    case Op::And: return Value::boolean(a != 0 && c != 0);
-    case Op::Or: return Value::boolean(a != 0 || c != 0);
-    case Op::Xor: return Value::boolean((a != 0) != (c != 0));
-    case Op::Lt: return Value::boolean(a < c && !realEqual(a, c));
-    case Op::Gt: return Value::boolean(a > c && !realEqual(a, c));
-    case Op::Le: return Value::boolean(a < c || realEqual(a, c));
-    case Op::Ge: return Value::boolean(a > c || realEqual(a, c));
-    default: break;
+    case Op::And:
+      return Value::boolean(a != 0 && c != 0);
+    case Op::Or:
+      return Value::boolean(a != 0 || c != 0);
+    case Op::Xor:
+      return Value::boolean((a != 0) != (c != 0));
+    case Op::Lt:
+      return Value::boolean(a < c && !realEqual(a, c));
+    case Op::Gt:
+      return Value::boolean(a > c && !realEqual(a, c));
+    case Op::Le:
+      return Value::boolean(a < c || realEqual(a, c));
+    case Op::Ge:
+      return Value::boolean(a > c || realEqual(a, c));
+    default:
+      break;
   }
   raise(alarm_no::kSyntaxError, "bad operator");
 }
@@ -234,28 +277,69 @@ Value Evaluator::function(std::string_view name, std::span<const Value> args) {
             fmt::format("arithmetic error in part program: argument of {} out of range", name));
   };
   auto real = [&](double v) { return numeric(Type::Real, v, std::string(name).c_str()); };
-  if (name == "SIN") { want(1); return real(std::sin(arg(0) * kDeg)); }
-  if (name == "COS") { want(1); return real(std::cos(arg(0) * kDeg)); }
+  if (name == "SIN") {
+    want(1);
+    return real(std::sin(arg(0) * kDeg));
+  }
+  if (name == "COS") {
+    want(1);
+    return real(std::cos(arg(0) * kDeg));
+  }
   if (name == "TAN") {
     want(1);
     double x = std::fmod(arg(0), 180.0);
     domain(std::fabs(std::fabs(x) - 90.0) > 1e-12);
     return real(std::tan(arg(0) * kDeg));
   }
-  if (name == "ASIN") { want(1); domain(std::fabs(arg(0)) <= 1); return real(std::asin(arg(0)) / kDeg); }
-  if (name == "ACOS") { want(1); domain(std::fabs(arg(0)) <= 1); return real(std::acos(arg(0)) / kDeg); }
-  if (name == "ATAN2") { want(2); domain(arg(0) != 0 || arg(1) != 0); return real(std::atan2(arg(0), arg(1)) / kDeg); }
-  if (name == "SQRT") { want(1); domain(arg(0) >= 0); return real(std::sqrt(arg(0))); }
+  if (name == "ASIN") {
+    want(1);
+    domain(std::fabs(arg(0)) <= 1);
+    return real(std::asin(arg(0)) / kDeg);
+  }
+  if (name == "ACOS") {
+    want(1);
+    domain(std::fabs(arg(0)) <= 1);
+    return real(std::acos(arg(0)) / kDeg);
+  }
+  if (name == "ATAN2") {
+    want(2);
+    domain(arg(0) != 0 || arg(1) != 0);
+    return real(std::atan2(arg(0), arg(1)) / kDeg);
+  }
+  if (name == "SQRT") {
+    want(1);
+    domain(arg(0) >= 0);
+    return real(std::sqrt(arg(0)));
+  }
   if (name == "ABS") {
     want(1);
     return numeric(args[0].type == Type::Int ? Type::Int : Type::Real, std::fabs(arg(0)), "ABS");
   }
-  if (name == "POT") { want(1); return real(arg(0) * arg(0)); }
-  if (name == "TRUNC") { want(1); return real(std::trunc(arg(0))); }
-  if (name == "ROUND") { want(1); return real(std::round(arg(0))); }
-  if (name == "ROUNDUP") { want(1); return real(std::ceil(arg(0))); }
-  if (name == "EXP") { want(1); return real(std::exp(arg(0))); }
-  if (name == "LN") { want(1); domain(arg(0) > 0); return real(std::log(arg(0))); }
+  if (name == "POT") {
+    want(1);
+    return real(arg(0) * arg(0));
+  }
+  if (name == "TRUNC") {
+    want(1);
+    return real(std::trunc(arg(0)));
+  }
+  if (name == "ROUND") {
+    want(1);
+    return real(std::round(arg(0)));
+  }
+  if (name == "ROUNDUP") {
+    want(1);
+    return real(std::ceil(arg(0)));
+  }
+  if (name == "EXP") {
+    want(1);
+    return real(std::exp(arg(0)));
+  }
+  if (name == "LN") {
+    want(1);
+    domain(arg(0) > 0);
+    return real(std::log(arg(0)));
+  }
   if (name == "MINVAL" || name == "MAXVAL") {
     want(2);
     double a = arg(0), c = arg(1);

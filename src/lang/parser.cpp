@@ -2,8 +2,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -12,9 +12,15 @@
 namespace ncoffset::lang {
 namespace {
 
-bool isAlpha(char c) { return (c >= 'A' && c <= 'Z') || c == '_' || c == '$'; }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isIdentChar(char c) { return isAlpha(c) || isDigit(c); }
+bool isAlpha(char c) {
+  return (c >= 'A' && c <= 'Z') || c == '_' || c == '$';
+}
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool isIdentChar(char c) {
+  return isAlpha(c) || isDigit(c);
+}
 
 // Up to eight characters packed into one integer (first character lowest), so that a name is
 // looked up in a keyword list by one switch instead of string comparisons; names longer than
@@ -30,12 +36,24 @@ constexpr std::uint64_t packName(std::string_view w) {
 // Keywords that open or continue statements with their own syntax.
 bool isControlKeyword(std::string_view w) {
   switch (packName(w)) {
-    case packName("DEF"): case packName("IF"): case packName("ELSE"): case packName("ENDIF"):
-    case packName("WHILE"): case packName("ENDWHILE"): case packName("FOR"):
-    case packName("ENDFOR"): case packName("REPEAT"): case packName("UNTIL"):
-    case packName("LOOP"): case packName("ENDLOOP"): case packName("GOTOF"):
-    case packName("GOTOB"): case packName("GOTO"): case packName("GOTOC"):
-    case packName("CASE"): case packName("PROC"):
+    case packName("DEF"):
+    case packName("IF"):
+    case packName("ELSE"):
+    case packName("ENDIF"):
+    case packName("WHILE"):
+    case packName("ENDWHILE"):
+    case packName("FOR"):
+    case packName("ENDFOR"):
+    case packName("REPEAT"):
+    case packName("UNTIL"):
+    case packName("LOOP"):
+    case packName("ENDLOOP"):
+    case packName("GOTOF"):
+    case packName("GOTOB"):
+    case packName("GOTO"):
+    case packName("GOTOC"):
+    case packName("CASE"):
+    case packName("PROC"):
       return true;
     default:
       return false;
@@ -127,10 +145,10 @@ class Parser {
 
   [[noreturn]] void syntax(const std::string& what) const {
     std::string near(s_.substr(i_ < s_.size() ? i_ : s_.size(), 24));
-    raise(alarm_no::kSyntaxError, "syntax error in text at column " + std::to_string(column()) +
-                                      (near.empty() ? std::string(" (end of block)")
-                                                    : " near '" + near + "'") +
-                                      ": " + what);
+    raise(alarm_no::kSyntaxError,
+          "syntax error in text at column " + std::to_string(column()) +
+              (near.empty() ? std::string(" (end of block)") : " near '" + near + "'") + ": " +
+              what);
   }
 
   void expect(char c, const char* what) {
@@ -476,26 +494,80 @@ class Parser {
     char c = peek(), d = peek(1);
     len = 1;
     switch (c) {
-      case '*': op = Op::Mul; prio = 10; return true;
-      case '/': op = Op::Div; prio = 10; return true;
-      case '+': op = Op::Add; prio = 9; return true;
-      case '-': op = Op::Sub; prio = 9; return true;
+      case '*':
+        op = Op::Mul;
+        prio = 10;
+        return true;
+      case '/':
+        op = Op::Div;
+        prio = 10;
+        return true;
+      case '+':
+        op = Op::Add;
+        prio = 9;
+        return true;
+      case '-':
+        op = Op::Sub;
+        prio = 9;
+        return true;
       case '=':
-        if (d == '=') { op = Op::Eq; prio = 1; len = 2; return true; }
+        if (d == '=') {
+          op = Op::Eq;
+          prio = 1;
+          len = 2;
+          return true;
+        }
         return false;
       case '<':
-        if (d == '>') { op = Op::Ne; prio = 1; len = 2; return true; }
-        if (d == '=') { op = Op::Le; prio = 1; len = 2; return true; }
-        if (d == '<') { op = Op::Concat; prio = 2; len = 2; return true; }
-        op = Op::Lt; prio = 1; return true;
+        if (d == '>') {
+          op = Op::Ne;
+          prio = 1;
+          len = 2;
+          return true;
+        }
+        if (d == '=') {
+          op = Op::Le;
+          prio = 1;
+          len = 2;
+          return true;
+        }
+        if (d == '<') {
+          op = Op::Concat;
+          prio = 2;
+          len = 2;
+          return true;
+        }
+        op = Op::Lt;
+        prio = 1;
+        return true;
       case '>':
-        if (d == '=') { op = Op::Ge; prio = 1; len = 2; return true; }
-        if (d == '<') { op = Op::Ne; prio = 1; len = 2; return true; }
-        op = Op::Gt; prio = 1; return true;
-      case ':': op = Op::Chain; prio = 0; return true;
-      default: break;
+        if (d == '=') {
+          op = Op::Ge;
+          prio = 1;
+          len = 2;
+          return true;
+        }
+        if (d == '<') {
+          op = Op::Ne;
+          prio = 1;
+          len = 2;
+          return true;
+        }
+        op = Op::Gt;
+        prio = 1;
+        return true;
+      case ':':
+        op = Op::Chain;
+        prio = 0;
+        return true;
+      default:
+        break;
     }
-    struct W { std::string_view w; Op op; int prio; };
+    struct W {
+      std::string_view w;
+      Op op;
+      int prio;
+    };
     static constexpr W kWords[] = {{"DIV", Op::IntDiv, 10}, {"MOD", Op::Mod, 10},
                                    {"B_AND", Op::BAnd, 8},  {"B_XOR", Op::BXor, 7},
                                    {"B_OR", Op::BOr, 6},    {"AND", Op::And, 5},
@@ -514,9 +586,9 @@ class Parser {
 
   void enter() {
     if (++depth_ > limits_.max_expression_depth)
-      raise(alarm_no::kExpressionDepth,
-            "expression nested deeper than the limit of " +
-                std::to_string(limits_.max_expression_depth) + " (--max-expression-depth)");
+      raise(alarm_no::kExpressionDepth, "expression nested deeper than the limit of " +
+                                            std::to_string(limits_.max_expression_depth) +
+                                            " (--max-expression-depth)");
   }
   void leave() { --depth_; }
 
@@ -552,14 +624,14 @@ class Parser {
     int col = column();
     char c = peek();
     if (!isAlpha(c)) {
-      if (c == '=' ) syntax("address or variable expected before '='");
+      if (c == '=') syntax("address or variable expected before '='");
       syntax("address or name expected");
     }
     // Single-letter address followed by a plain number: X10, G1, M30, X-5.5, T1, D1, R1=..
     char n1 = peek(1);
     if (c != '$' && c != '_' &&
-        (isDigit(n1) || ((n1 == '.' || n1 == '-' || n1 == '+') &&
-                         (isDigit(peek(2)) || peek(2) == '.')))) {
+        (isDigit(n1) ||
+         ((n1 == '.' || n1 == '-' || n1 == '+') && (isDigit(peek(2)) || peek(2) == '.')))) {
       numericAddress(col);
       return;
     }
@@ -668,17 +740,46 @@ class Parser {
   static bool isExtendedAddress(std::string_view name) {
     if (name.size() == 1) return name[0] != '$' && name[0] != '_';
     switch (packName(name)) {
-      case packName("CR"): case packName("AR"): case packName("TURN"): case packName("DISR"):
-      case packName("DISC"): case packName("OFFN"): case packName("DISCL"):
-      case packName("DISRP"): case packName("FAD"): case packName("RPL"): case packName("RND"):
-      case packName("RNDM"): case packName("CHF"): case packName("CHR"): case packName("SPOS"):
-      case packName("SPOSA"): case packName("FRC"): case packName("FRCM"):
-      case packName("ANG"): case packName("AP"): case packName("RP"): case packName("DISPR"):
-      case packName("I1"): case packName("J1"): case packName("K1"): case packName("CT"):
-      case packName("SF"): case packName("FA"): case packName("POS"): case packName("POSA"):
-      case packName("ACC"): case packName("OVR"): case packName("LIMS"): case packName("MOVT"):
-      case packName("PM"): case packName("PR"): case packName("STOLF"): case packName("DITS"):
-      case packName("DITE"): case packName("SCC"):
+      case packName("CR"):
+      case packName("AR"):
+      case packName("TURN"):
+      case packName("DISR"):
+      case packName("DISC"):
+      case packName("OFFN"):
+      case packName("DISCL"):
+      case packName("DISRP"):
+      case packName("FAD"):
+      case packName("RPL"):
+      case packName("RND"):
+      case packName("RNDM"):
+      case packName("CHF"):
+      case packName("CHR"):
+      case packName("SPOS"):
+      case packName("SPOSA"):
+      case packName("FRC"):
+      case packName("FRCM"):
+      case packName("ANG"):
+      case packName("AP"):
+      case packName("RP"):
+      case packName("DISPR"):
+      case packName("I1"):
+      case packName("J1"):
+      case packName("K1"):
+      case packName("CT"):
+      case packName("SF"):
+      case packName("FA"):
+      case packName("POS"):
+      case packName("POSA"):
+      case packName("ACC"):
+      case packName("OVR"):
+      case packName("LIMS"):
+      case packName("MOVT"):
+      case packName("PM"):
+      case packName("PR"):
+      case packName("STOLF"):
+      case packName("DITS"):
+      case packName("DITE"):
+      case packName("SCC"):
         return true;
       default:
         return false;
@@ -746,8 +847,8 @@ class Parser {
       return;
     }
     // Address extension: M2=6, S1=1000, H2=5, T1=..? (spindle / extension number).
-    if ((address == "M" || address == "S" || address == "H" || address == "T" ||
-         address == "D" || address == "F") &&
+    if ((address == "M" || address == "S" || address == "H" || address == "T" || address == "D" ||
+         address == "F") &&
         isDigit(peek())) {
       size_t save = i_;
       long long ext = readInteger();
@@ -768,8 +869,7 @@ class Parser {
       skipSpaces();
       if (peek() == '=' && peek(1) != '=') {
         ++i_;
-        addWord(std::string_view(s_).substr(save - 1, end - save + 1), -1,
-                expression(), col, true);
+        addWord(std::string_view(s_).substr(save - 1, end - save + 1), -1, expression(), col, true);
         return;
       }
       i_ = save;
@@ -884,10 +984,14 @@ class Parser {
         bool any = false;
         while (i_ < s_.size() && depth > 0) {
           char ch = s_[i_++];
-          if (ch == '(') ++depth;
-          else if (ch == ')') --depth;
-          else if (ch == ',' && depth == 1) ++count;
-          else if (ch != ' ') any = true;
+          if (ch == '(')
+            ++depth;
+          else if (ch == ')')
+            --depth;
+          else if (ch == ',' && depth == 1)
+            ++count;
+          else if (ch != ' ')
+            any = true;
         }
         if (depth != 0) syntax("')' expected after the PROC parameters");
         st.ext = any ? count + 1 : 0;
@@ -924,14 +1028,22 @@ class Parser {
   }
 
   static bool typeOf(std::string_view w, VarType& t) {
-    if (w == "INT") t = VarType::Int;
-    else if (w == "REAL") t = VarType::Real;
-    else if (w == "BOOL") t = VarType::Bool;
-    else if (w == "STRING") t = VarType::String;
-    else if (w == "CHAR") t = VarType::Char;
-    else if (w == "AXIS") t = VarType::Axis;
-    else if (w == "FRAME") t = VarType::Frame;
-    else return false;
+    if (w == "INT")
+      t = VarType::Int;
+    else if (w == "REAL")
+      t = VarType::Real;
+    else if (w == "BOOL")
+      t = VarType::Bool;
+    else if (w == "STRING")
+      t = VarType::String;
+    else if (w == "CHAR")
+      t = VarType::Char;
+    else if (w == "AXIS")
+      t = VarType::Axis;
+    else if (w == "FRAME")
+      t = VarType::Frame;
+    else
+      return false;
     return true;
   }
 
@@ -943,7 +1055,8 @@ class Parser {
       w = ident();
     }
     VarType type;
-    if (!typeOf(w, type)) syntax("data type expected after DEF (INT, REAL, BOOL, STRING, CHAR, AXIS, FRAME)");
+    if (!typeOf(w, type))
+      syntax("data type expected after DEF (INT, REAL, BOOL, STRING, CHAR, AXIS, FRAME)");
     int string_length = 0;
     skipSpaces();
     if (type == VarType::String) {
@@ -1089,8 +1202,13 @@ bool normalizeInto(std::string_view text, std::string& out, size_t& len, int* ba
     auto c = static_cast<unsigned char>(text[k]);
     switch (kBytes.cls[c]) {
       case 1:
-      case 4: *dst++ = kBytes.upper[c]; ++k; continue;
-      case 2: k = n; continue;  // comment: the rest of the line
+      case 4:
+        *dst++ = kBytes.upper[c];
+        ++k;
+        continue;
+      case 2:
+        k = n;
+        continue;  // comment: the rest of the line
       case 3: {
         *dst++ = '"';
         ++k;

@@ -33,8 +33,12 @@ std::string_view staticKeyword(std::string_view kw) {
   return {};
 }
 
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-bool isDigitChar(char c) { return c >= '0' && c <= '9'; }
+bool isLetter(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
+bool isDigitChar(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // Fast rejection without normalising: a block whose first word (after "/", the block number)
 // is a letter followed by a digit (G1, X10, N20) cannot start with a label or a control
@@ -85,7 +89,8 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
     if (!h.label.empty()) {
       std::string name(h.label);
       if (labels_.count(name))
-        throw AlarmError(alarm_no::kSyntaxError, fmt::format("label {} defined twice", name), here.line);
+        throw AlarmError(alarm_no::kSyntaxError, fmt::format("label {} defined twice", name),
+                         here.line);
       labels_.emplace(std::move(name), here);
     }
     std::string_view kw = h.keyword;
@@ -93,28 +98,30 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
     if (kw == "IF" && h.has_goto) continue;
     if (kw == "IF" || kw == "WHILE" || kw == "FOR" || kw == "REPEAT" || kw == "LOOP") {
       if (static_cast<int>(stack.size()) >= max_depth)
-        throw AlarmError(alarm_no::kControlDepth,
-                         fmt::format("nesting depth of control structures exceeded (limit {})", max_depth),
-                         here.line);
+        throw AlarmError(
+            alarm_no::kControlDepth,
+            fmt::format("nesting depth of control structures exceeded (limit {})", max_depth),
+            here.line);
       stack.push_back({staticKeyword(kw), here, {}, false});
       continue;
     }
     if (kw == "ELSE") {
       if (stack.empty() || stack.back().keyword != "IF" || stack.back().has_else)
-        throw AlarmError(alarm_no::kControlNesting, "invalid nesting of control structures: ELSE without IF", here.line);
+        throw AlarmError(alarm_no::kControlNesting,
+                         "invalid nesting of control structures: ELSE without IF", here.line);
       stack.back().has_else = true;
       stack.back().else_pos = here;
       continue;
     }
     if (kw == "ENDIF" || kw == "ENDWHILE" || kw == "ENDFOR" || kw == "UNTIL" || kw == "ENDLOOP") {
       if (stack.empty() || closerOf(stack.back().keyword) != kw)
-        throw AlarmError(alarm_no::kControlNesting,
-                         fmt::format("invalid nesting of control structures: {} {}", kw,
-                                     stack.empty() ? std::string("without opening statement")
-                                                   : fmt::format("closes {} of line {}",
-                                                                 stack.back().keyword,
-                                                                 stack.back().pos.line)),
-                         here.line);
+        throw AlarmError(
+            alarm_no::kControlNesting,
+            fmt::format("invalid nesting of control structures: {} {}", kw,
+                        stack.empty() ? std::string("without opening statement")
+                                      : fmt::format("closes {} of line {}", stack.back().keyword,
+                                                    stack.back().pos.line)),
+            here.line);
       Open o = stack.back();
       stack.pop_back();
       if (o.keyword == "IF") {

@@ -13,7 +13,8 @@
 
 namespace ncoffset::lang {
 
-std::shared_ptr<SourceFile> SourceFile::load(const std::filesystem::path& path, std::string* error) {
+std::shared_ptr<SourceFile> SourceFile::load(const std::filesystem::path& path,
+                                             std::string* error) {
   std::shared_ptr<SourceFile> f(new SourceFile());
   f->name_ = path.string();
   f->path_ = path;
@@ -22,7 +23,7 @@ std::shared_ptr<SourceFile> SourceFile::load(const std::filesystem::path& path, 
     if (error) *error = std::strerror(errno);
     return nullptr;
   }
-  struct stat st{};
+  struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
     ::close(fd);
     if (error) *error = S_ISDIR(st.st_mode) ? "is a directory" : "not a regular file";

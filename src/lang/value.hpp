@@ -10,7 +10,18 @@ struct Frame;
 
 namespace ncoffset::lang {
 
-enum class Type : unsigned char { Int, Real, Bool, Char, String, Axis, Frame, Symbol, ArrayRef, Empty };
+enum class Type : unsigned char {
+  Int,
+  Real,
+  Bool,
+  Char,
+  String,
+  Axis,
+  Frame,
+  Symbol,
+  ArrayRef,
+  Empty
+};
 const char* typeName(Type t);
 
 // A value. Numbers (INT, REAL, BOOL, CHAR) live in `num`; STRING and AXIS names and symbols

@@ -10,7 +10,9 @@
 
 namespace ncoffset::out {
 
-inline bool isArc(const Segment& s) { return s.motion == Motion::G2 || s.motion == Motion::G3; }
+inline bool isArc(const Segment& s) {
+  return s.motion == Motion::G2 || s.motion == Motion::G3;
+}
 
 // An arc as c + cos(t*sweep) u + sin(t*sweep) w + t*rise*n, t in [0, 1]: u from the centre to
 // the start point, w = n x u (so a positive sweep turns counter-clockwise seen from +n).

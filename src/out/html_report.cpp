@@ -3,7 +3,9 @@
 namespace ncoffset::out {
 namespace {
 
-void append(fmt::memory_buffer& b, std::string_view s) { b.append(s.data(), s.data() + s.size()); }
+void append(fmt::memory_buffer& b, std::string_view s) {
+  b.append(s.data(), s.data() + s.size());
+}
 
 void appendLoc(fmt::memory_buffer& b, const SourceLoc& where) {
   appendXmlEscaped(b, where.file);
@@ -35,15 +37,18 @@ void HtmlReport::segment(const Segment& s) {
   box_.add(s);
   if (n < kMaxRows) {
     auto it = fmt::appender(rows_);
-    fmt::format_to(it, "<tr><td class=\"n\">{}</td><td>{}</td><td class=\"n\">{}</td>"
-                       "<td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">",
+    fmt::format_to(it,
+                   "<tr><td class=\"n\">{}</td><td>{}</td><td class=\"n\">{}</td>"
+                   "<td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">",
                    s.line, motionName(s.motion), s.end.x + 0.0, s.end.y + 0.0, s.end.z + 0.0);
     if (s.has_feed) fmt::format_to(it, "{}", s.feed);
     append(rows_, "</td></tr>\n");
   }
 }
 
-void HtmlReport::message(const SourceLoc& where, const std::string& text) { note(where, 0, text); }
+void HtmlReport::message(const SourceLoc& where, const std::string& text) {
+  note(where, 0, text);
+}
 
 void HtmlReport::warning(const SourceLoc& where, int number, const std::string& text) {
   note(where, number, text);
@@ -61,7 +66,9 @@ void HtmlReport::finish(const Alarm* alarm) {
   if (finished_) return;
   finished_ = true;
   auto& b = w_.buf();
-  append(b, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>ncoffset: ");
+  append(
+      b,
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>ncoffset: ");
   appendXmlEscaped(b, program_);
   append(b, "</title>\n");
   append(b, kStyle);
@@ -77,13 +84,15 @@ void HtmlReport::finish(const Alarm* alarm) {
   if (total == 0) {
     append(b, "<p>No segment.</p>\n");
   } else {
-    append(b, "<table class=\"segments\">\n<tr><th>line</th><th>motion</th><th>x</th><th>y</th>"
-              "<th>z</th><th>feed</th></tr>\n");
+    append(b,
+           "<table class=\"segments\">\n<tr><th>line</th><th>motion</th><th>x</th><th>y</th>"
+           "<th>z</th><th>feed</th></tr>\n");
     b.append(rows_.data(), rows_.data() + rows_.size());
     append(b, "</table>\n");
     if (total > kMaxRows)
-      fmt::format_to(fmt::appender(b), "<p>The first {} segments are listed; {} more are not.</p>\n",
-                     kMaxRows, total - kMaxRows);
+      fmt::format_to(fmt::appender(b),
+                     "<p>The first {} segments are listed; {} more are not.</p>\n", kMaxRows,
+                     total - kMaxRows);
   }
   append(b, "</body>\n</html>\n");
   w_.flush();

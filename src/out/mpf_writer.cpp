@@ -7,7 +7,9 @@
 namespace ncoffset::out {
 namespace {
 
-void append(fmt::memory_buffer& b, std::string_view s) { b.append(s.data(), s.data() + s.size()); }
+void append(fmt::memory_buffer& b, std::string_view s) {
+  b.append(s.data(), s.data() + s.size());
+}
 
 // A comment runs to the end of the line: no line breaks in it.
 void appendCommentText(fmt::memory_buffer& b, std::string_view s) {

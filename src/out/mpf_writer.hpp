@@ -29,11 +29,11 @@ class MpfWriter final : public PathSink {
 
   BufferedWriter w_;
   FileNames names_;
-  long long n_ = 0;    // block number of the last block
-  int file_ = -1;      // source file of the last block
-  int plane_ = -1;     // applicate axis of the last plane written (2: G17, 1: G18, 0: G19)
+  long long n_ = 0;  // block number of the last block
+  int file_ = -1;    // source file of the last block
+  int plane_ = -1;   // applicate axis of the last plane written (2: G17, 1: G18, 0: G19)
   bool has_feed_ = false;
-  double feed_ = 0;    // the last F written
+  double feed_ = 0;  // the last F written
   bool finished_ = false;
 };
 

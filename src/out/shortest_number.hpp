@@ -62,7 +62,7 @@ inline char* writeUnsigned(char* out, unsigned v) {
 // division is correctly rounded, as is reading the text).
 inline char* writeFixed(char* out, double v) {
   const double a = v < 0 ? -v : v;
-  if (!(a < 1e9)) return nullptr;  // also NaN
+  if (!(a < 1e9)) return nullptr;               // also NaN
   const auto whole = static_cast<unsigned>(a);  // a < 1e9 < 2^32
   if (static_cast<double>(whole) == a) {
     if (v < 0 && whole != 0) *out++ = '-';  // -0 prints as 0

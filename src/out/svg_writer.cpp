@@ -7,7 +7,7 @@ namespace ncoffset::out {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kChordStep = kPi / 180;  // polylines: chords of at most 1 degree
-constexpr int kCommandsPerElement = 512;   // a new <path> now and then keeps lines short
+constexpr int kCommandsPerElement = 512;  // a new <path> now and then keeps lines short
 
 // The view plane: abscissa and ordinate axes and the normal the drawing is seen from
 // (planeAxes of G17/G18/G19, W1 2.1).
@@ -18,29 +18,39 @@ struct Projection {
 
 Projection projection(View view) {
   switch (view) {
-    case View::XY: return {0, 1, {0, 0, 1}};
-    case View::ZX: return {2, 0, {0, 1, 0}};
-    case View::YZ: return {1, 2, {1, 0, 0}};
+    case View::XY:
+      return {0, 1, {0, 0, 1}};
+    case View::ZX:
+      return {2, 0, {0, 1, 0}};
+    case View::YZ:
+      return {1, 2, {1, 0, 0}};
   }
   return {0, 1, {0, 0, 1}};
 }
 
 const char* viewLegend(View view) {
   switch (view) {
-    case View::XY: return "view XY (G17): X right, Y up";
-    case View::ZX: return "view ZX (G18): Z right, X up";
-    case View::YZ: return "view YZ (G19): Y right, Z up";
+    case View::XY:
+      return "view XY (G17): X right, Y up";
+    case View::ZX:
+      return "view ZX (G18): Z right, X up";
+    case View::YZ:
+      return "view YZ (G19): Y right, Z up";
   }
   return "";
 }
 
-void append(fmt::memory_buffer& b, std::string_view s) { b.append(s.data(), s.data() + s.size()); }
+void append(fmt::memory_buffer& b, std::string_view s) {
+  b.append(s.data(), s.data() + s.size());
+}
 
 // The SVG user coordinates of a point: y grows downwards, so the ordinate is negated.
 struct Pt {
   double x, y;
 };
-Pt toSvg(const Projection& p, Vec3 q) { return {q[p.h] + 0.0, -q[p.v] + 0.0}; }
+Pt toSvg(const Projection& p, Vec3 q) {
+  return {q[p.h] + 0.0, -q[p.v] + 0.0};
+}
 // The same point up to rounding (a segment starts where the previous one ended).
 bool near(Pt a, Pt b) {
   auto close = [](double u, double v) {
@@ -63,20 +73,35 @@ void appendXmlEscaped(fmt::memory_buffer& b, std::string_view s) {
     auto c = static_cast<unsigned char>(s[i]);
     if (c < 0x80) {
       switch (c) {
-        case '&': append(b, "&amp;"); break;
-        case '<': append(b, "&lt;"); break;
-        case '>': append(b, "&gt;"); break;
-        case '"': append(b, "&quot;"); break;
-        case '\'': append(b, "&#39;"); break;
-        default: b.push_back(c < 0x20 && c != '\t' && c != '\n' && c != '\r' ? ' ' : s[i]);
+        case '&':
+          append(b, "&amp;");
+          break;
+        case '<':
+          append(b, "&lt;");
+          break;
+        case '>':
+          append(b, "&gt;");
+          break;
+        case '"':
+          append(b, "&quot;");
+          break;
+        case '\'':
+          append(b, "&#39;");
+          break;
+        default:
+          b.push_back(c < 0x20 && c != '\t' && c != '\n' && c != '\r' ? ' ' : s[i]);
       }
       ++i;
       continue;
     }
     // A UTF-8 sequence passes whole; anything else becomes U+FFFD (XML needs valid text).
-    size_t len = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    size_t len = c >= 0xC2 && c <= 0xDF   ? 2
+                 : c >= 0xE0 && c <= 0xEF ? 3
+                 : c >= 0xF0 && c <= 0xF4 ? 4
+                                          : 0;
     bool ok = len > 0 && i + len <= s.size();
-    for (size_t k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) & 0xC0) == 0x80;
+    for (size_t k = 1; ok && k < len; ++k)
+      ok = (static_cast<unsigned char>(s[i + k]) & 0xC0) == 0x80;
     if (ok) {
       auto c1 = static_cast<unsigned char>(s[i + 1]);
       if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 >= 0xA0) || (c == 0xF0 && c1 < 0x90) ||
@@ -110,8 +135,8 @@ class SvgWriter::Layer {
     if (cls != cls_ || !near(a, pen_) || commands_ >= kCommandsPerElement) {
       close();
       fmt::format_to(fmt::appender(buf_),
-                     "<path class=\"{}\" vector-effect=\"non-scaling-stroke\" d=\"M{} {}", cls,
-                     a.x, a.y);
+                     "<path class=\"{}\" vector-effect=\"non-scaling-stroke\" d=\"M{} {}", cls, a.x,
+                     a.y);
       cls_ = cls;
     }
     if (isArc(s))
@@ -289,8 +314,7 @@ SvgWriter::Layout SvgWriter::writeHeader(const Alarm* alarm) {
                    "<circle class=\"nco-alarm\" vector-effect=\"non-scaling-stroke\" cx=\"{}\" "
                    "cy=\"{}\" r=\"{}\"/><text class=\"nco-legend\" x=\"{}\" y=\"{}\" "
                    "font-size=\"{}\">where alarm {} stopped the run</text>\n",
-                   lx + font, y - 0.35 * font, 0.4 * font, lx + 2.6 * font, y, font,
-                   alarm->number);
+                   lx + font, y - 0.35 * font, 0.4 * font, lx + 2.6 * font, y, font, alarm->number);
   }
   append(b, "</g>\n");
   w_.lineDone();

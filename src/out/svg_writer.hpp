@@ -5,12 +5,12 @@
 // viewBox and copies the drawing behind it.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <string_view>
-
-#include <fmt/format.h>
 
 #include "ncoffset/path.hpp"
 #include "out/arc_geometry.hpp"

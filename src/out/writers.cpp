@@ -66,7 +66,9 @@ void CsvWriter::segment(const Segment& s) {
   w_.lineDone();
 }
 
-void CsvWriter::finish(const Alarm*) { w_.flush(); }
+void CsvWriter::finish(const Alarm*) {
+  w_.flush();
+}
 
 void JsonLinesWriter::segment(const Segment& s) {
   auto& b = w_.buf();

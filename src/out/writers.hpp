@@ -2,11 +2,11 @@
 // that is flushed on every alarm and at the end, never leaving a torn line.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <functional>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "ncoffset/path.hpp"
 

@@ -52,7 +52,9 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
   return s;
 }
 
-void Placement::motion(const MotionBlock& m) { sink_.segment(toSegment(m)); }
+void Placement::motion(const MotionBlock& m) {
+  sink_.segment(toSegment(m));
+}
 
 void Placement::motion(const MotionBlock& like, const Geometry& g) {
   sink_.segment(toSegment(like, g));
@@ -63,6 +65,8 @@ void Placement::warning(const MotionBlock& m, int number, const std::string& tex
   sink_.warning({file_name_ ? file_name_(m.file) : kUnknown, m.line}, number, text);
 }
 
-void Placement::programmedSegment(const MotionBlock& m) { sink_.programmed(toSegment(m)); }
+void Placement::programmedSegment(const MotionBlock& m) {
+  sink_.programmed(toSegment(m));
+}
 
 }  // namespace ncoffset::place

@@ -16,19 +16,19 @@ namespace ncoffset::place {
 // One motion as the interpreter computed it.
 struct MotionBlock {
   Motion motion = Motion::G1;
-  Vec3 start;    // WCS
-  Vec3 end;      // WCS
-  Vec3 centre;   // WCS, arcs
+  Vec3 start;         // WCS
+  Vec3 end;           // WCS
+  Vec3 centre;        // WCS, arcs
   int applicate = 2;  // arcs: index of the axis perpendicular to the plane (G17: Z)
   Plane plane = Plane::G17;
-  TrcSettings trc;    // radius compensation of this block
+  TrcSettings trc;  // radius compensation of this block
   int turns = 0;
   Affine frame;  // WCS -> BCS for this block (identity with G53/G153/SUPA and programmed MCS)
   // Blocks with the same serial have the same frame (the interpreter counts its frame changes;
   // 0: frames suppressed): saves comparing frames where they are the same, as they usually are.
   unsigned long long frame_serial = 0;
   bool frame_identity = false;  // `frame` is exactly the identity (set with it; false: apply it)
-  Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
+  Vec3 tool_offset;             // BCS vector from tool tip to carrier reference point
   double feed = 0;
   bool has_feed = false;
   int line = 0;

@@ -12,26 +12,40 @@ using Row = std::array<int, 3>;
 // SD42940 tables (Parameter Manual 08/2013 p321, PM-NC p750): axes of L1, L2, L3.
 Row turningRow(int key) {
   switch (key) {
-    case 17: return {Y, X, Z};
-    case -17: return {X, Y, Z};
-    case -18: return {Z, X, Y};
-    case 19: return {Z, Y, X};
-    case -19: return {Y, Z, X};
-    default: return {X, Z, Y};  // 18 and any other non-zero value
+    case 17:
+      return {Y, X, Z};
+    case -17:
+      return {X, Y, Z};
+    case -18:
+      return {Z, X, Y};
+    case 19:
+      return {Z, Y, X};
+    case -19:
+      return {Y, Z, X};
+    default:
+      return {X, Z, Y};  // 18 and any other non-zero value
   }
 }
 Row millingRow(int key) {
   switch (key) {
-    case 18: return {Y, X, Z};
-    case 19: return {X, Z, Y};
-    case -17: return {Z, X, Y};
-    case -18: return {Y, Z, X};
-    case -19: return {X, Y, Z};
-    default: return {Z, Y, X};  // 17 and any other non-zero value
+    case 18:
+      return {Y, X, Z};
+    case 19:
+      return {X, Z, Y};
+    case -17:
+      return {Z, X, Y};
+    case -18:
+      return {Y, Z, X};
+    case -19:
+      return {X, Y, Z};
+    default:
+      return {Z, Y, X};  // 17 and any other non-zero value
   }
 }
 
-int planeKey(Plane p) { return p == Plane::G17 ? 17 : p == Plane::G18 ? 18 : 19; }
+int planeKey(Plane p) {
+  return p == Plane::G17 ? 17 : p == Plane::G18 ? 18 : 19;
+}
 
 }  // namespace
 

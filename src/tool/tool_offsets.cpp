@@ -95,8 +95,8 @@ Vec3 toolOrientation(const EdgeData& e, const ToolSettings& s, Plane plane,
 
 std::array<double, 2> tipFromEdgeCentre(int sl, double r) {
   // P - S in (L1 axis, L2 axis): 1 (+,+) 2 (+,-) 3 (-,-) 4 (-,+) 5 (0,+) 6 (+,0) 7 (0,-) 8 (-,0).
-  static constexpr int kDir[10][2] = {{0, 0},  {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
-                                      {0, 1},  {1, 0}, {0, -1}, {-1, 0},  {0, 0}};
+  static constexpr int kDir[10][2] = {{0, 0}, {1, 1}, {1, -1}, {-1, -1}, {-1, 1},
+                                      {0, 1}, {1, 0}, {0, -1}, {-1, 0},  {0, 0}};
   if (sl < 0 || sl > 9) return {0, 0};
   return {kDir[sl][0] * r, kDir[sl][1] * r};
 }
@@ -106,9 +106,11 @@ LentoaxResult lentoax(const EdgeData& e, const ToolSettings& s, Plane plane,
                       const std::string& coord_in) {
   LentoaxResult r;
   std::string coord;
-  for (char ch : coord_in) coord.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(ch))));
+  for (char ch : coord_in)
+    coord.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(ch))));
   bool wcs;
-  if (coord == "WCS" || coord == "W") wcs = true;
+  if (coord == "WCS" || coord == "W")
+    wcs = true;
   else if (coord == "MCS" || coord == "M" || coord == "BCS" || coord == "B" || coord == "KCS" ||
            coord == "K" || coord == "TCS" || coord == "T")
     wcs = false;

@@ -15,10 +15,10 @@ inline constexpr int kMaxEdge = 9;
 
 struct Tool {
   std::map<int, EdgeData> edges;
-  std::map<int, std::string> name;            // $TC_TP2 tool identifier (index 2)
-  std::map<int, double> tp;                   // $TC_TPn numeric tool data
-  std::map<int, double> tpc;                  // $TC_TPCn user tool data
-  std::map<std::pair<int, int>, double> edge_user;  // $TC_DPCn[t,d]: (d, n) -> value
+  std::map<int, std::string> name;                    // $TC_TP2 tool identifier (index 2)
+  std::map<int, double> tp;                           // $TC_TPn numeric tool data
+  std::map<int, double> tpc;                          // $TC_TPCn user tool data
+  std::map<std::pair<int, int>, double> edge_user;    // $TC_DPCn[t,d]: (d, n) -> value
   std::map<std::pair<int, int>, double> edge_normal;  // $TC_DPVN3..5[t,d]: (d, n) -> value
 };
 

@@ -30,7 +30,10 @@ class PieceWindow {
   }
   // Keeps the first n elements.
   void truncate(size_t n) { size_ = n < size_ ? n : size_; }
-  void clear() { size_ = 0; head_ = 0; }
+  void clear() {
+    size_ = 0;
+    head_ = 0;
+  }
 
  private:
   // The capacity stays a power of two, so an index is a mask, not a division.

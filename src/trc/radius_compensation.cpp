@@ -32,7 +32,8 @@ constexpr double kDiscTolerance = 1e-3;
 bool sameAffine(const Affine& a, const Affine& b) {
   if (std::memcmp(&a, &b, sizeof(Affine)) == 0) return true;  // the usual case, bit for bit
   for (size_t i = 0; i < 3; ++i) {
-    if (std::fabs(a.offset[static_cast<int>(i)] - b.offset[static_cast<int>(i)]) > 1e-12) return false;
+    if (std::fabs(a.offset[static_cast<int>(i)] - b.offset[static_cast<int>(i)]) > 1e-12)
+      return false;
     for (size_t j = 0; j < 3; ++j)
       if (std::fabs(a.linear.m[i][j] - b.linear.m[i][j]) > 1e-12) return false;
   }
@@ -99,8 +100,8 @@ Element RadiusCompensation::toElement(const MotionBlock& m) const {
 place::Placement::Geometry RadiusCompensation::geometry(const MotionBlock& like,
                                                         const Element& e) const {
   PlaneAxes pa = planeAxes(like.plane);
-  place::Placement::Geometry g{like.motion, like.start, like.end, like.centre, like.applicate,
-                               like.turns};
+  place::Placement::Geometry g{like.motion, like.start,     like.end,
+                               like.centre, like.applicate, like.turns};
   g.start[pa.abscissa] = e.p0.a;
   g.start[pa.ordinate] = e.p0.o;
   g.end[pa.abscissa] = e.p1.a;
@@ -143,7 +144,7 @@ bool RadiusCompensation::planeMotion(const MotionBlock& m) const {
 }
 
 RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, double r0,
-                                                          double r1) const {
+                                                         double r1) const {
   Piece p;
   compensateInto(p, m, r0, r1);
   return p;
@@ -224,7 +225,8 @@ void RadiusCompensation::emitPiece(const Piece& p) {
 
 void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
   if (m.plane != selection_.plane)
-    raise(10757, "change of compensation plane not possible while tool radius compensation is active");
+    raise(10757,
+          "change of compensation plane not possible while tool radius compensation is active");
   if (m.frame_serial != selection_.frame_serial && !sameAffine(m.frame, selection_.frame))
     notModelled("a frame change while compensation is active");
 }
@@ -275,8 +277,7 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       if (sideOf(m.trc) != side()) settings_ = m.trc;  // the side of the first element counts
       const double r = std::fabs(settings_.radius);
       Piece first = compensate(m, r, r);
-      if (!first.valid)
-        collision(m.line, settings_.check_blocks);  // no element to approach
+      if (!first.valid) collision(m.line, settings_.check_blocks);  // no element to approach
       Piece approach;
       approach.block = selection_;
       approach.approach = true;
@@ -430,7 +431,8 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   // belongs to the next block.
   const double app = next.block.start[planeAxes(next.block.plane).applicate];
   next.transition.clear();
-  transition(next.transition, next.block, a, t1, b, t2, p, s, t.corner == CornerMode::TransitionCircle ? t.disc : 0, app, app);
+  transition(next.transition, next.block, a, t1, b, t2, p, s,
+             t.corner == CornerMode::TransitionCircle ? t.disc : 0, app, app);
 }
 
 void RadiusCompensation::transition(std::vector<MotionBlock>& out, const MotionBlock& like, Vec2 a,
@@ -449,7 +451,8 @@ void RadiusCompensation::transition(std::vector<MotionBlock>& out, const MotionB
         chord.p1 = pts[i];
         MotionBlock cb = toBlock(like, chord);
         cb.motion = like.motion == Motion::G0 ? Motion::G0 : Motion::G1;
-        const double f0 = static_cast<double>(i) / pts.size(), f1 = static_cast<double>(i + 1) / pts.size();
+        const double f0 = static_cast<double>(i) / pts.size(),
+                     f1 = static_cast<double>(i + 1) / pts.size();
         cb.start[pa.applicate] = app0 + f0 * (app1 - app0);
         cb.end[pa.applicate] = app0 + f1 * (app1 - app0);
         out.push_back(cb);
@@ -472,11 +475,8 @@ void RadiusCompensation::transition(std::vector<MotionBlock>& out, const MotionB
   out.push_back(tb_block);
 }
 
-std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(const Piece& c,
-                                                                 const Element& target,
-                                                                 bool extension,
-                                                                 const Element& later,
-                                                                 double side) {
+std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(
+    const Piece& c, const Element& target, bool extension, const Element& later, double side) {
   std::optional<geom::Crossing> best;
   for (const auto& x : geom::intersect(target, later)) {
     const bool on_target =
@@ -625,7 +625,8 @@ void RadiusCompensation::retract(const MotionBlock& m) {
       if (!c.valid) continue;
       std::optional<geom::Crossing> best;
       for (const auto& x : geom::intersect(c.compensated, ext))
-        if (x.u1 > kEps && x.u1 < 1 + kEps && (ext.arc || x.u2 > -kEps) && (!best || x.u1 > best->u1))
+        if (x.u1 > kEps && x.u1 < 1 + kEps && (ext.arc || x.u2 > -kEps) &&
+            (!best || x.u1 > best->u1))
           best = x;
       if (!best) continue;
       found = {j, best->p};
@@ -664,18 +665,22 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
   const double r = std::fabs(settings_.radius), s = first.side;
   std::optional<Vec2> t = tangentPoint(p0, p1, r, s, true);
   if (!t)
-    throw AlarmError(10755,
-                     "activation of tool radius compensation via KONT not possible in current start point",
-                     selection_.line);  // the selection block is the one to change
+    throw AlarmError(
+        10755,
+        "activation of tool radius compensation via KONT not possible in current start point",
+        selection_.line);  // the selection block is the one to change
   Element line;
   line.p0 = p0;
   line.p1 = *t;
   const Vec2 dir = unit(*t - p0);
-  const double angle = std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(dir, first.programmed.startTangent())))) * kDeg;
+  const double angle =
+      std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(dir, first.programmed.startTangent())))) *
+      kDeg;
   if (settings_.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
     std::optional<geom::Crossing> best;
     for (const auto& x : geom::intersect(line, first.compensated))
-      if (x.u1 > kEps && x.u2 < kEps && (!best || geom::length(x.p - p1) < geom::length(best->p - p1)))
+      if (x.u1 > kEps && x.u2 < kEps &&
+          (!best || geom::length(x.p - p1) < geom::length(best->p - p1)))
         best = x;
     if (best) {
       approach.compensated.p1 = best->p;
@@ -704,17 +709,21 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   const double r = std::fabs(last.r1), s = last.side;
   std::optional<Vec2> t = tangentPoint(p2, pe, r, s, false);
   if (!t)
-    raise(10756, "deactivation of tool radius compensation via KONT not possible at programmed end point");
+    raise(10756,
+          "deactivation of tool radius compensation via KONT not possible at programmed end point");
   Element line;
   line.p0 = *t;
   line.p1 = p2;
   PlaneAxes pa = planeAxes(m.plane);
   const Vec2 dir = unit(p2 - *t);
-  const double angle = std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(last.programmed.endTangent(), dir)))) * kDeg;
+  const double angle =
+      std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(last.programmed.endTangent(), dir)))) *
+      kDeg;
   if (m.trc.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
     std::optional<geom::Crossing> best;
     for (const auto& x : geom::intersect(last.compensated, line))
-      if (x.u1 > 1 - kEps && x.u2 < 1 - kEps && (!best || geom::length(x.p - pe) < geom::length(best->p - pe)))
+      if (x.u1 > 1 - kEps && x.u2 < 1 - kEps &&
+          (!best || geom::length(x.p - pe) < geom::length(best->p - pe)))
         best = x;
     if (best) {
       last.compensated.p1 = best->p;
@@ -737,8 +746,7 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
 
 void RadiusCompensation::preprocessorStop(bool alarm) {
   if (state_ == State::Off) return;
-  if (alarm)
-    raise(10778, "preprocessor stop with active tool radius compensation (SD42480 = 1)");
+  if (alarm) raise(10778, "preprocessor stop with active tool radius compensation (SD42480 = 1)");
   // "Traversing continues to the offset point in the last block. Correspondingly, the offset
   // point in the start point is approached in the first block after a preprocessing stop."
   // (FM-W1 08/2005 2.4.11). The contour may be violated, as the manual warns.

@@ -58,7 +58,7 @@ class RadiusCompensation {
     int strategy = 460;         // approach line: G460/G461/G462
     geom::Vec2 first_tangent;   // approach line: the first element's start tangent (G462)
     std::vector<place::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
-    std::vector<place::MotionBlock> waiting;       // blocks without plane motion after it
+    std::vector<place::MotionBlock> waiting;     // blocks without plane motion after it
   };
 
   geom::Element toElement(const place::MotionBlock& m) const;
@@ -82,8 +82,8 @@ class RadiusCompensation {
   // The transition about corner point p from a (tangent ta) to b (tangent tb): the circle of
   // radius R, or with DISC > 0 the DISC curve as chords; the applicate runs from app0 to app1.
   void transition(std::vector<place::MotionBlock>& out, const place::MotionBlock& like,
-                  geom::Vec2 a, geom::Vec2 ta, geom::Vec2 b, geom::Vec2 tb, geom::Vec2 p,
-                  double s, double disc, double app0, double app1) const;
+                  geom::Vec2 a, geom::Vec2 ta, geom::Vec2 b, geom::Vec2 tb, geom::Vec2 p, double s,
+                  double disc, double app0, double app1) const;
   // A junction of the window without intersection, or an element without equidistant.
   bool anyOpen() const;
   // Bottleneck detection: intersects `next` with earlier elements of the window; `needed`:
@@ -121,10 +121,10 @@ class RadiusCompensation {
   place::MotionBlock selection_;             // the G41/G42 block waiting for the first element
   std::vector<place::MotionBlock> waiting_;  // blocks without plane motion after the selection
   PieceWindow<Piece> window_;
-  long count_ = 0;                           // traversing blocks since the selection
-  bool restart_next_ = false;                // after STOPRE: the next element starts anew
+  long count_ = 0;             // traversing blocks since the selection
+  bool restart_next_ = false;  // after STOPRE: the next element starts anew
   int dummy_blocks_ = 0;
-  TrcSettings settings_;                     // of the last block
+  TrcSettings settings_;  // of the last block
 };
 
 }  // namespace ncoffset::trc

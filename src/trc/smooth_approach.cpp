@@ -25,7 +25,9 @@ Vec2 inPlane(const MotionBlock& m, const Vec3& v) {
   return {v[pa.abscissa], v[pa.ordinate]};
 }
 
-bool isArc(const MotionBlock& m) { return m.motion == Motion::G2 || m.motion == Motion::G3; }
+bool isArc(const MotionBlock& m) {
+  return m.motion == Motion::G2 || m.motion == Motion::G3;
+}
 
 bool hasPlaneMotion(const MotionBlock& m) {
   return isArc(m) || geom::length(inPlane(m, m.end) - inPlane(m, m.start)) > 1e-12;
@@ -64,8 +66,7 @@ Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, V
   const double side = trcSide(trc), radius = side != 0 ? std::fabs(trc.radius) : 0.0;
   const Vec2 n = geom::leftNormal(t);
   Shape out;
-  if (!q.has_disr)
-    sarAlarm(10742, "SAR: distance DISR not programmed", s.line);
+  if (!q.has_disr) sarAlarm(10742, "SAR: distance DISR not programmed", s.line);
   if (kind == 1) {
     // The line is the distance of the tool edge: R + DISR (R counted only if positive, details
     // §4.3; PM-F 11/2006 p372).
@@ -85,10 +86,14 @@ Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, V
   // Side of the circle: G141 left, G142 right, G140 the compensation side (G143 without
   // compensation), G143 the side of the start / end point relative to the tangent at P4.
   double sigma = 0;
-  if (q.side == 141) sigma = 1;
-  else if (q.side == 142) sigma = -1;
-  else if (q.side == 140 && side != 0) sigma = side;
-  else sigma = geom::cross(t, ref - p4) >= 0 ? 1 : -1;
+  if (q.side == 141)
+    sigma = 1;
+  else if (q.side == 142)
+    sigma = -1;
+  else if (q.side == 140 && side != 0)
+    sigma = side;
+  else
+    sigma = geom::cross(t, ref - p4) >= 0 ? 1 : -1;
   // The contour radius that puts the tool centre on a circle of radius DISR.
   const double r = side == 0 ? q.disr : sigma == side ? q.disr + radius : q.disr - radius;
   if (r <= kEps)
@@ -234,8 +239,9 @@ void SmoothApproach::blockWithoutMotion() {
 
 void SmoothApproach::preprocessorStop() {
   if (state_ != State::Idle)
-    raise(10746, "SAR: preprocessor stop between the SAR block and the block that defines the "
-                 "approach direction");
+    raise(10746,
+          "SAR: preprocessor stop between the SAR block and the block that defines the "
+          "approach direction");
 }
 
 void SmoothApproach::finish() {
@@ -282,9 +288,9 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
     emit(sub(s, p1, p2, fast, q.feed_before));
     emit(sub(s, p2, p3, Motion::G1, q.has_fad ? q.fad : sar_f));
   }
-  const double contour_f = q.space == 340 && q.has_fad ? q.fad
+  const double contour_f = q.space == 340 && q.has_fad               ? q.fad
                            : p4_ && p4_->has_feed && !q.f_programmed ? p4_->feed
-                                                                      : sar_f;
+                                                                     : sar_f;
   const MotionBlock curve = curveBlock(p4b, p3, p4, shape, contour_f);
   for (int i = 0; i < held_dummies_; ++i) out_.blockWithoutMotion();
   held_dummies_ = 0;
@@ -324,8 +330,10 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   const double app3 = q.space == 340 ? app2 : app4;
   // The end point: from the SAR block; without any geometry axis the retraction ends in P2,
   // with only the perpendicular axis in P1 (details §4.3, PM-F 10.2004 8-50).
-  if (!q.any_axis) p0 = point(s, shape.p3, app2);
-  else if (!q.plane_axis) p0 = point(s, shape.p3, s.end[app]);
+  if (!q.any_axis)
+    p0 = point(s, shape.p3, app2);
+  else if (!q.plane_axis)
+    p0 = point(s, shape.p3, s.end[app]);
   const double app1 = q.has_disrp ? (q.disrp_ac ? q.disrp : app4 + q.disrp) : p0[app];
   checkMonotonic({app4, app3, app2, app1, p0[app]}, s.line);
   const Vec3 p1 = point(s, shape.p3, app1), p2 = point(s, shape.p3, app2),

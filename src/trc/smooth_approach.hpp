@@ -54,11 +54,11 @@ class SmoothApproach {
 
   RadiusCompensation& out_;
   State state_ = State::Idle;
-  place::MotionBlock sar_;                 // the approach block
-  SarRequest request_;                     // its request (sar_.sar points here)
-  std::optional<place::MotionBlock> p4_;   // the block that supplies P4 (if not sar_)
-  std::vector<place::MotionBlock> held_;   // geometry blocks between P4 and the tangent block
-  int held_dummies_ = 0;                   // blocks without motion in between
+  place::MotionBlock sar_;                // the approach block
+  SarRequest request_;                    // its request (sar_.sar points here)
+  std::optional<place::MotionBlock> p4_;  // the block that supplies P4 (if not sar_)
+  std::vector<place::MotionBlock> held_;  // geometry blocks between P4 and the tangent block
+  int held_dummies_ = 0;                  // blocks without motion in between
   int max_dummy_blocks_ = 5;
   // The last block with plane motion that went through (for the retraction's tangent).
   // (Only what the tangent needs: copying whole blocks cost 100 instructions a block.)
@@ -68,7 +68,7 @@ class SmoothApproach {
     Vec3 start, end, centre;
   };
   std::optional<LastContour> last_;
-  int last_trc_mode_ = 40;     // G40/G41/G42 of the last block
+  int last_trc_mode_ = 40;  // G40/G41/G42 of the last block
   double last_trc_radius_ = 0;
   std::optional<Vec3> end_override_;
   Vec3 apr_, aep_;

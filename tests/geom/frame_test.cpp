@@ -56,9 +56,9 @@ TEST(Rotation, RpyOrderIsZThenYThenX) {
 }
 
 TEST(Rotation, RpyAnglesRoundTrip) {
-  const Vec3 cases[] = {{0, 0, 0},      {10, 20, 30},     {-170, 45, 100}, {179, -89, -179},
-                        {90, 0, 0},     {0, 0, -90},      {30, -60, 150},  {-45, 89.5, 0},
-                        {0.001, 0, 0},  {120, 10, -120}};
+  const Vec3 cases[] = {{0, 0, 0},     {10, 20, 30},   {-170, 45, 100}, {179, -89, -179},
+                        {90, 0, 0},    {0, 0, -90},    {30, -60, 150},  {-45, 89.5, 0},
+                        {0.001, 0, 0}, {120, 10, -120}};
   for (Vec3 a : cases) {
     Vec3 b = rpyAngles(rpyMatrix(a));
     EXPECT_TRUE(near(b, a, 1e-8)) << a.x << " " << a.y << " " << a.z;

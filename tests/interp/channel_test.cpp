@@ -53,12 +53,12 @@ void expectVec(Vec3 v, double x, double y, double z) {
 }
 
 TEST(Channel, LinesAndArcs) {
-  Outcome r = run(
-      "G1 X10 F100\n"       // 1
-      "G2 X20 Y0 CR=5\n"    // 2
-      "G0 Z5\n"             // 3
-      "G3 X10 Y0 I-5 J0\n"  // 4: F100 is modal across the G0
-      "M30\n");
+  Outcome r =
+      run("G1 X10 F100\n"       // 1
+          "G2 X20 Y0 CR=5\n"    // 2
+          "G0 Z5\n"             // 3
+          "G3 X10 Y0 I-5 J0\n"  // 4: F100 is modal across the G0
+          "M30\n");
   ASSERT_EQ(r.result.status, RunResult::Status::Ok);
   EXPECT_FALSE(r.result.alarm);
   EXPECT_EQ(r.sink.finished, 1);
@@ -114,10 +114,10 @@ TEST(Channel, CrlfAndCommentsAndBlockNumbers) {
 }
 
 TEST(Channel, AlarmCarriesNumberFileAndLine) {
-  Outcome r = run(
-      "G1 X10 F100\n"  // 1
-      "R1=1/0\n"       // 2
-      "G1 X20\n");     // 3
+  Outcome r =
+      run("G1 X10 F100\n"  // 1
+          "R1=1/0\n"       // 2
+          "G1 X20\n");     // 3
   ASSERT_EQ(r.result.status, RunResult::Status::Alarm);
   ASSERT_TRUE(r.result.alarm);
   EXPECT_EQ(r.result.alarm->number, 14051);
@@ -158,16 +158,16 @@ TEST(Channel, BlockLimit) {
 }
 
 TEST(Channel, ControlFlowAndVariables) {
-  Outcome r = run(
-      "DEF INT I\n"
-      "FOR I=1 TO 3\n"
-      "  G1 X=I*10 F100\n"
-      "ENDFOR\n"
-      "IF (I>=3) AND (R1==0)\n"
-      "  G1 Y5\n"
-      "ELSE\n"
-      "  G1 Y-5\n"
-      "ENDIF\n");
+  Outcome r =
+      run("DEF INT I\n"
+          "FOR I=1 TO 3\n"
+          "  G1 X=I*10 F100\n"
+          "ENDFOR\n"
+          "IF (I>=3) AND (R1==0)\n"
+          "  G1 Y5\n"
+          "ELSE\n"
+          "  G1 Y-5\n"
+          "ENDIF\n");
   ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
   ASSERT_EQ(r.sink.segments.size(), 4u);
   expectVec(r.sink.segments[2].end, 30, 0, 0);
@@ -198,10 +198,10 @@ TEST(Channel, FrameAndCoordinateSystems) {
 }
 
 TEST(Channel, MirrorSwapsArcSense) {
-  Outcome r = run(
-      "MIRROR X0\n"
-      "G1 X10 Y0 F100\n"
-      "G2 X0 Y10 I-10 J0\n");
+  Outcome r =
+      run("MIRROR X0\n"
+          "G1 X10 Y0 F100\n"
+          "G2 X0 Y10 I-10 J0\n");
   ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
   ASSERT_EQ(r.sink.segments.size(), 2u);
   expectVec(r.sink.segments[0].end, -10, 0, 0);
@@ -227,26 +227,33 @@ TEST(Channel, RotationInsideAMirroredSystemIsMirroredToo) {
 }
 
 TEST(Channel, VariablesJson) {
-  Outcome r = run(
-      "DEF INT K[3]=SET(1,2,3)\n"
-      "DEF REAL A=0.1\n"
-      "DEF BOOL F=TRUE\n"
-      "DEF STRING[8] S=\"a\\b\"\n"
-      "R1=3\n"
-      "R7=1/3\n"
-      "M30\n");
+  Outcome r =
+      run("DEF INT K[3]=SET(1,2,3)\n"
+          "DEF REAL A=0.1\n"
+          "DEF BOOL F=TRUE\n"
+          "DEF STRING[8] S=\"a\\b\"\n"
+          "R1=3\n"
+          "R7=1/3\n"
+          "M30\n");
   ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
   EXPECT_EQ(r.vars,
             "{\"R\": {\"1\": 3, \"7\": 0.3333333333333333}, "
-            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, \"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], \"$P_AEP\": [0,0,0], \"$P_APDV\": 0, " "\"A\": 0.1, \"F\": true, "
+            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
+            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
+            "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
+            "\"A\": 0.1, \"F\": true, "
             "\"K\": [1,2,3], \"S\": \"a\\\\b\"}\n");
 }
 
 TEST(Channel, VariablesJsonTwoDimensionsAndNoR) {
   Outcome r = run("DEF REAL M[2,2]=SET(1,2,3,4.5)\n");
   ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
-  EXPECT_EQ(r.vars, "{\"R\": {}, "
-            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, \"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], \"$P_AEP\": [0,0,0], \"$P_APDV\": 0, " "\"M\": [[1,2],[3,4.5]]}\n");
+  EXPECT_EQ(r.vars,
+            "{\"R\": {}, "
+            "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
+            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
+            "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
+            "\"M\": [[1,2],[3,4.5]]}\n");
 }
 
 TEST(Channel, FileNameOfMainProgram) {
@@ -261,8 +268,9 @@ class TempDir {
  public:
   TempDir() {
     path_ = std::filesystem::temp_directory_path() /
-            ("ncoffset_channel_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-             "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+            ("ncoffset_channel_test_" +
+             std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }

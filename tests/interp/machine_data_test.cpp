@@ -46,10 +46,10 @@ TEST(MachineData, FindByNameAndNumber) {
 
 TEST(MachineData, UnknownOrWrongClass) {
   MachineData md;
-  EXPECT_EQ(md.find("SD20270"), -1);                    // a machine datum, not a setting datum
-  EXPECT_EQ(md.find("MD42940"), -1);                    // a setting datum, not a machine datum
-  EXPECT_EQ(md.find("$MC_TOOL_LENGTH_CONST"), -1);      // SD under an MD prefix
-  EXPECT_EQ(md.find("$SN_TOOL_LENGTH_CONST"), -1);      // NCK instead of channel
+  EXPECT_EQ(md.find("SD20270"), -1);                // a machine datum, not a setting datum
+  EXPECT_EQ(md.find("MD42940"), -1);                // a setting datum, not a machine datum
+  EXPECT_EQ(md.find("$MC_TOOL_LENGTH_CONST"), -1);  // SD under an MD prefix
+  EXPECT_EQ(md.find("$SN_TOOL_LENGTH_CONST"), -1);  // NCK instead of channel
   EXPECT_EQ(md.find("$SC_NO_SUCH_DATUM"), -1);
   EXPECT_EQ(md.find("SD99999"), -1);
   EXPECT_EQ(md.find("SD"), -1);
@@ -84,12 +84,8 @@ TEST(MachineData, DefaultsOfSpecSection10) {
       {"MD22560", 6},      // TOOL_CHANGE_M_CODE
       {"MD28050", 100},    // R0..R99
       {"SD42440", 1},      // FRAME_OFFSET_INCR_PROG
-      {"SD42900", 0},
-      {"SD42910", 0},
-      {"SD42920", 0},
-      {"SD42930", 0},
-      {"SD42940", 0},
-      {"SD42950", 0},
+      {"SD42900", 0},     {"SD42910", 0}, {"SD42920", 0},
+      {"SD42930", 0},     {"SD42940", 0}, {"SD42950", 0},
   };
   for (const Expect& e : defaults) {
     ASSERT_GE(md.find(e.name), 0) << e.name;

@@ -75,7 +75,7 @@ constexpr double kEps = 1e-12;
 TEST_F(EvaluatorTest, ArithmeticPriorities) {
   EXPECT_EQ(num("2+3*4"), 14);
   EXPECT_EQ(num("(2+3)*4"), 20);
-  EXPECT_EQ(num("10-4-3"), 3);   // left associative
+  EXPECT_EQ(num("10-4-3"), 3);  // left associative
   EXPECT_EQ(num("48/4/2"), 6);
   EXPECT_EQ(num("-2*3"), -6);
   EXPECT_EQ(num("2*-3"), -6);
@@ -238,8 +238,8 @@ TEST_F(EvaluatorTest, RealEqualityTolerance) {
   EXPECT_TRUE(truth("0.1+0.2>=0.3"));
   EXPECT_FALSE(truth("0.3<0.1+0.2"));
   EXPECT_FALSE(truth("0.1+0.2<>0.3"));
-  EXPECT_TRUE(truth("1.0==1.0000000000001"));   // relative difference 1e-13
-  EXPECT_FALSE(truth("1.0==1.00000000001"));    // relative difference 1e-11
+  EXPECT_TRUE(truth("1.0==1.0000000000001"));  // relative difference 1e-13
+  EXPECT_FALSE(truth("1.0==1.00000000001"));   // relative difference 1e-11
   EXPECT_TRUE(truth("1.0<1.00000000001"));
 
   EXPECT_TRUE(realEqual(1e6, 1e6 * (1 + 5e-13)));

@@ -421,8 +421,10 @@ TEST(Parser, JumpForms) {
     EXPECT_EQ(b.stmts[0].jump, c.jump) << c.text;
     const Node& t = b.node(b.stmts[0].target);
     EXPECT_EQ(t.kind, c.kind) << c.text;
-    if (c.kind == NodeKind::BlockNo) EXPECT_EQ(t.number, c.number) << c.text;
-    else EXPECT_EQ(t.text, c.name) << c.text;
+    if (c.kind == NodeKind::BlockNo)
+      EXPECT_EQ(t.number, c.number) << c.text;
+    else
+      EXPECT_EQ(t.text, c.name) << c.text;
   }
   Block s = parse("GOTOF \"LBL\"");
   EXPECT_EQ(s.node(s.stmts[0].target).kind, NodeKind::String);
@@ -566,20 +568,53 @@ TEST(Parser, PlainBlockAsWritten) {
 }
 
 TEST(Parser, PlainWordFastPathMatchesGeneralPath) {
-  for (const char* text :
-       {"G1 X10.5 Y-2 F1000", "G3 X100 Y10 CR=10", "G1X10Y-5.5Z+.5", "T1 D1", "M30", "X-.5",
-        "X.", "X-", "X+-5", "X1.2.3", "X10 =5", "M2=6", "I1=5", "R1=5", "R1 X5", "R-5",
-        "CR=1EX2", "X1EX2", "X10E5", "CR =10", "CR==10", "CR=10X5", "DISC=50 G41", "G1\tX1",
-        "X123456789012345678", "X1234567890123456789", "X0.1234567890123456", "CR=-.5",
-        "DISR=+5", "ABC=5", "G1 X1 Y2 Z3 A4", "X=10", "S1000 M3", "F.5", "G64 X1",
-        "G1 X10 CDON", "X10$P", "X10_A", "G1 X1 ;"}) {
+  for (const char* text : {"G1 X10.5 Y-2 F1000",
+                           "G3 X100 Y10 CR=10",
+                           "G1X10Y-5.5Z+.5",
+                           "T1 D1",
+                           "M30",
+                           "X-.5",
+                           "X.",
+                           "X-",
+                           "X+-5",
+                           "X1.2.3",
+                           "X10 =5",
+                           "M2=6",
+                           "I1=5",
+                           "R1=5",
+                           "R1 X5",
+                           "R-5",
+                           "CR=1EX2",
+                           "X1EX2",
+                           "X10E5",
+                           "CR =10",
+                           "CR==10",
+                           "CR=10X5",
+                           "DISC=50 G41",
+                           "G1\tX1",
+                           "X123456789012345678",
+                           "X1234567890123456789",
+                           "X0.1234567890123456",
+                           "CR=-.5",
+                           "DISR=+5",
+                           "ABC=5",
+                           "G1 X1 Y2 Z3 A4",
+                           "X=10",
+                           "S1000 M3",
+                           "F.5",
+                           "G64 X1",
+                           "G1 X10 CDON",
+                           "X10$P",
+                           "X10_A",
+                           "G1 X1 ;"}) {
     expectSameAsGeneralPath(text);
   }
   // Random sequences of tokens: whatever the fast path takes, it must take the same way.
-  const std::string tokens[] = {"X", "G", "CR", "R", "M", "I", "E", "EX", "=", "-", "+", ".",
-                                "1", "10", "5.25", " ", "\t", "0", "==", "(", "DISC", "Y", "F",
-                                "x", "cr", ";", "\r", "\x01", "\xE4", std::string(1, '\0'),
-                                "N", "\"A\""};
+  const std::string tokens[] = {
+      "X",    "G",    "CR", "R",  "M",    "I", "E",  "EX",   "=",    "-",
+      "+",    ".",    "1",  "10", "5.25", " ", "\t", "0",    "==",   "(",
+      "DISC", "Y",    "F",  "x",  "cr",   ";", "\r", "\x01", "\xE4", std::string(1, '\0'),
+      "N",    "\"A\""};
   unsigned seed = 12345;
   for (int n = 0; n < 20000; ++n) {
     seed = seed * 1103515245u + 12345u;
@@ -598,29 +633,29 @@ TEST(Parser, PlainWordFastPathMatchesGeneralPath) {
 
 TEST(Parser, SyntaxErrorsRaise12080) {
   const char* broken[] = {
-      "X=",            // no value after '='
-      "=5",            // '=' without address
-      "R1",            // R parameter without '='
-      "R1=(2+3",       // missing ')'
-      "R1=2+",         // missing operand
-      "R1=*2",         // operand expected
-      "X10.5.5",       // two decimal points
-      "IF",            // condition missing
-      "FOR R1=1",      // TO missing
-      "FOR =1 TO 2",   // loop variable missing
-      "CASE R1 OF 1 GOTOF A",      // '(' missing
-      "CASE(R1) 1 GOTOF A",        // OF missing
-      "CASE(R1) OF 1 X10",         // GOTOF/GOTOB missing
-      "GOTOF",                      // destination missing
-      "MSG(\"open",                 // unterminated string
-      "R1='H1G'",                   // bad hex digit
-      "R1='X1'",                    // unknown constant
-      "R1='H1F",                    // unterminated constant
-      "$TC_DP1[1,1]",               // indexed variable without '='
-      "$TC_DP1[1,1 =3",             // ']' missing
-      "X1 )",                       // stray ')'
-      "M100=5",                     // address extension too large
-      "R1=5 + 1 2",                 // digits after an expression
+      "X=",                    // no value after '='
+      "=5",                    // '=' without address
+      "R1",                    // R parameter without '='
+      "R1=(2+3",               // missing ')'
+      "R1=2+",                 // missing operand
+      "R1=*2",                 // operand expected
+      "X10.5.5",               // two decimal points
+      "IF",                    // condition missing
+      "FOR R1=1",              // TO missing
+      "FOR =1 TO 2",           // loop variable missing
+      "CASE R1 OF 1 GOTOF A",  // '(' missing
+      "CASE(R1) 1 GOTOF A",    // OF missing
+      "CASE(R1) OF 1 X10",     // GOTOF/GOTOB missing
+      "GOTOF",                 // destination missing
+      "MSG(\"open",            // unterminated string
+      "R1='H1G'",              // bad hex digit
+      "R1='X1'",               // unknown constant
+      "R1='H1F",               // unterminated constant
+      "$TC_DP1[1,1]",          // indexed variable without '='
+      "$TC_DP1[1,1 =3",        // ']' missing
+      "X1 )",                  // stray ')'
+      "M100=5",                // address extension too large
+      "R1=5 + 1 2",            // digits after an expression
   };
   for (const char* text : broken) EXPECT_EQ(parseAlarm(text), alarm_no::kSyntaxError) << text;
 }

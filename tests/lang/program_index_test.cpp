@@ -75,12 +75,12 @@ TEST(NextLine, SplitsLfAndCrlf) {
 
 TEST(ProgramIndex, IfElseEndif) {
   Indexed p = build(
-      "G1 X1 F100\n"   // 1
-      "IF R1==1\n"     // 2
-      "G1 X2\n"        // 3
-      "ELSE\n"         // 4
-      "G1 X3\n"        // 5
-      "ENDIF\n"        // 6
+      "G1 X1 F100\n"  // 1
+      "IF R1==1\n"    // 2
+      "G1 X2\n"       // 3
+      "ELSE\n"        // 4
+      "G1 X3\n"       // 5
+      "ENDIF\n"       // 6
       "M30\n");
   EXPECT_EQ(p.partner(2), 4);
   EXPECT_EQ(p.end(2), 6);
@@ -99,16 +99,16 @@ TEST(ProgramIndex, IfWithoutElse) {
 
 TEST(ProgramIndex, NestedLoops) {
   Indexed p = build(
-      "FOR R1=1 TO 3\n"       // 1
-      "  WHILE R2<2\n"        // 2
-      "    REPEAT\n"          // 3
-      "      LOOP\n"          // 4
-      "        GOTOF OUT\n"   // 5
-      "      ENDLOOP\n"       // 6
-      "    UNTIL R3>1\n"      // 7
-      "  ENDWHILE\n"          // 8
-      "ENDFOR\n"              // 9
-      "OUT:\n");              // 10
+      "FOR R1=1 TO 3\n"      // 1
+      "  WHILE R2<2\n"       // 2
+      "    REPEAT\n"         // 3
+      "      LOOP\n"         // 4
+      "        GOTOF OUT\n"  // 5
+      "      ENDLOOP\n"      // 6
+      "    UNTIL R3>1\n"     // 7
+      "  ENDWHILE\n"         // 8
+      "ENDFOR\n"             // 9
+      "OUT:\n");             // 10
   EXPECT_EQ(p.partner(1), 9);
   EXPECT_EQ(p.partner(9), 1);
   EXPECT_EQ(p.partner(2), 8);
@@ -123,11 +123,11 @@ TEST(ProgramIndex, NestedLoops) {
 
 TEST(ProgramIndex, NumbersLabelsSkipAndCaseDoNotHideKeywords) {
   Indexed p = build(
-      "n10 if r1==1\r\n"        // 1
-      "/N20 LBL1: else\r\n"     // 2
-      ":30 endif ; comment\r\n" // 3
-      "; IF in a comment\r\n"   // 4
-      "MSG(\"IF\")\r\n");       // 5
+      "n10 if r1==1\r\n"         // 1
+      "/N20 LBL1: else\r\n"      // 2
+      ":30 endif ; comment\r\n"  // 3
+      "; IF in a comment\r\n"    // 4
+      "MSG(\"IF\")\r\n");        // 5
   EXPECT_EQ(p.partner(1), 2);
   EXPECT_EQ(p.partner(2), 3);
   EXPECT_EQ(p.partner(3), 1);
@@ -138,10 +138,10 @@ TEST(ProgramIndex, NumbersLabelsSkipAndCaseDoNotHideKeywords) {
 
 TEST(ProgramIndex, IfWithJumpIsNoStructure) {
   Indexed p = build(
-      "IF R1==1 GOTOF SKIP\n"  // 1
-      "G1 X1 F10\n"            // 2
-      "SKIP: G1 X2\n"          // 3
-      "IF R1==2 GOTOB N10\n"); // 4
+      "IF R1==1 GOTOF SKIP\n"   // 1
+      "G1 X1 F10\n"             // 2
+      "SKIP: G1 X2\n"           // 3
+      "IF R1==2 GOTOB N10\n");  // 4
   EXPECT_EQ(p.partner(1), 0);
   ASSERT_NE(p.index->label("SKIP"), nullptr);
   EXPECT_EQ(p.index->label("SKIP")->line, 3);

@@ -16,9 +16,12 @@ constexpr double kPi = 3.14159265358979323846;
 
 TEST(ArcGeometry, SweepSenseFullCircleAndTurns) {
   const Vec3 z{0, 0, 1};
-  EXPECT_NEAR(arcGeometry(arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 0}, {}, z)).sweep, kPi / 2, 1e-12);
-  EXPECT_NEAR(arcGeometry(arcSeg(1, Motion::G2, {10, 0, 0}, {0, 10, 0}, {}, z)).sweep, -1.5 * kPi, 1e-12);
-  EXPECT_NEAR(arcGeometry(arcSeg(1, Motion::G2, {10, 0, 0}, {10, 0, 0}, {}, z)).sweep, -2 * kPi, 1e-12);
+  EXPECT_NEAR(arcGeometry(arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 0}, {}, z)).sweep, kPi / 2,
+              1e-12);
+  EXPECT_NEAR(arcGeometry(arcSeg(1, Motion::G2, {10, 0, 0}, {0, 10, 0}, {}, z)).sweep, -1.5 * kPi,
+              1e-12);
+  EXPECT_NEAR(arcGeometry(arcSeg(1, Motion::G2, {10, 0, 0}, {10, 0, 0}, {}, z)).sweep, -2 * kPi,
+              1e-12);
   EXPECT_NEAR(arcGeometry(arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 4}, {}, z, 1, 2)).sweep,
               4.5 * kPi, 1e-12);
   // Seen from -Z, G2 turns the other way.
@@ -40,8 +43,8 @@ TEST(ArcGeometry, PointsAlongAHelix) {
 
 TEST(ArcGeometry, Length) {
   EXPECT_DOUBLE_EQ(segmentLength(lineSeg(1, Motion::G1, {0, 0, 0}, {3, 4, 12})), 13);
-  EXPECT_NEAR(segmentLength(arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 0}, {}, {0, 0, 1})),
-              5 * kPi, 1e-12);
+  EXPECT_NEAR(segmentLength(arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 0}, {}, {0, 0, 1})), 5 * kPi,
+              1e-12);
   // Helix: the unrolled screw line, sqrt((r*phi)^2 + h^2).
   EXPECT_NEAR(segmentLength(arcSeg(1, Motion::G3, {10, 0, 0}, {10, 0, 7}, {}, {0, 0, 1})),
               std::hypot(20 * kPi, 7), 1e-9);

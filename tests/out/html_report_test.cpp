@@ -91,8 +91,10 @@ TEST(HtmlReport, SummaryDrawingAndTable) {
 TEST(HtmlReport, AlarmIsNamedAndMarked) {
   Alarm a = makeAlarm(14040, "P.MPF", 12, "error in end point of circle <R>");
   std::string html = report(
-      [](HtmlReport& r) { r.segment(lineSeg(1, Motion::G1, {0, 0, 0}, {3, 4, 0}, 100)); }, &a,
-      "mcs");
+      [](HtmlReport& r) {
+        r.segment(lineSeg(1, Motion::G1, {0, 0, 0}, {3, 4, 0}, 100));
+      },
+      &a, "mcs");
   EXPECT_EQ(test::tagBalance(html, {"meta"}), "") << html;
   EXPECT_NE(html.find("<td class=\"alarm\">alarm 14040 at P.MPF:12: error in end point of circle "
                       "&lt;R&gt;</td>"),

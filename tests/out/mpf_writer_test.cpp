@@ -80,17 +80,16 @@ TEST(MpfWriter, ArcsInEachPlaneWithThePlaneWhenItChanges) {
       arcSeg(3, Motion::G2, {-10, 0, 0}, {0, 0, 10}, {0, 0, 0}, kY),
       arcSeg(4, Motion::G3, {0, 0, 10}, {0, 10, 0}, {0, 0, 0}, kX),
   });
-  std::vector<std::string> want = {
-      kHeader,
-      kG90,
-      "G17",
-      "N1 G2 X0 Y10 Z0 I=AC(0) J=AC(0) F100 ; line 1",
-      "N2 G3 X-10 Y0 Z0 I=AC(0) J=AC(0) ; line 2",
-      "G18",
-      "N3 G2 X0 Y0 Z10 I=AC(0) K=AC(0) ; line 3",
-      "G19",
-      "N4 G3 X0 Y10 Z0 J=AC(0) K=AC(0) ; line 4",
-      "M30"};
+  std::vector<std::string> want = {kHeader,
+                                   kG90,
+                                   "G17",
+                                   "N1 G2 X0 Y10 Z0 I=AC(0) J=AC(0) F100 ; line 1",
+                                   "N2 G3 X-10 Y0 Z0 I=AC(0) J=AC(0) ; line 2",
+                                   "G18",
+                                   "N3 G2 X0 Y0 Z10 I=AC(0) K=AC(0) ; line 3",
+                                   "G19",
+                                   "N4 G3 X0 Y10 Z0 J=AC(0) K=AC(0) ; line 4",
+                                   "M30"};
   EXPECT_EQ(p, want);
 }
 

@@ -18,7 +18,9 @@ std::string viaFast(double v) {
   return fmt::to_string(b);
 }
 
-std::string viaFmt(double v) { return fmt::format("{}", v + 0.0); }
+std::string viaFmt(double v) {
+  return fmt::format("{}", v + 0.0);
+}
 
 // Straight into a character array, as the CSV writer uses it.
 std::string viaInline(double v) {
@@ -27,11 +29,41 @@ std::string viaInline(double v) {
 }
 
 TEST(ShortestNumber, SameTextAsFmtForTypicalValues) {
-  for (double v : {0.0, -0.0, 1.0, -1.0, 0.5, 10.25, 41.33974596215561, 15.527864045000421,
-                   3.944271909999159, 0.1, 0.2, 0.3, 1e-4, 9.9999e-5, 1e-5, 123456.789012,
-                   999999999.999999, 1e9, -1e9, 1e15, 1e16, 1e300, 5e-324, 0.000125, 7.000001,
-                   -2.5e-4, 100000000.0, 12345678.9, 0.1 + 0.2, 999999999.0, -999999999.0,
-                   4294967296.0, 1e10, -7.0, 0.99999999999})
+  for (double v : {0.0,
+                   -0.0,
+                   1.0,
+                   -1.0,
+                   0.5,
+                   10.25,
+                   41.33974596215561,
+                   15.527864045000421,
+                   3.944271909999159,
+                   0.1,
+                   0.2,
+                   0.3,
+                   1e-4,
+                   9.9999e-5,
+                   1e-5,
+                   123456.789012,
+                   999999999.999999,
+                   1e9,
+                   -1e9,
+                   1e15,
+                   1e16,
+                   1e300,
+                   5e-324,
+                   0.000125,
+                   7.000001,
+                   -2.5e-4,
+                   100000000.0,
+                   12345678.9,
+                   0.1 + 0.2,
+                   999999999.0,
+                   -999999999.0,
+                   4294967296.0,
+                   1e10,
+                   -7.0,
+                   0.99999999999})
     EXPECT_EQ(viaFast(v), viaFmt(v)) << v;
   for (double v : {0.0, -0.0, 1.0, -1.0, 96.0, -20.0, 1000.0, 999999999.0, -999999999.0, 1e9,
                    4294967296.0, 1e10, 10.25, -0.5, std::nan(""), 1e300})
@@ -61,13 +93,13 @@ TEST(ShortestNumber, UnsignedAsToString) {
     ASSERT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
   for (unsigned v = 100000; v < 100000000; v += 9973)
     ASSERT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
-  for (unsigned v : {999999u, 1000000u, 10000000u, 99999999u, 100000000u, 123456789u,
-                     4294967295u})
+  for (unsigned v : {999999u, 1000000u, 10000000u, 99999999u, 100000000u, 123456789u, 4294967295u})
     EXPECT_EQ(std::string(text, writeUnsigned(text, v)), std::to_string(v));
 }
 
 TEST(ShortestNumber, NonFiniteAsFmt) {
-  EXPECT_EQ(viaFast(std::numeric_limits<double>::infinity()), viaFmt(std::numeric_limits<double>::infinity()));
+  EXPECT_EQ(viaFast(std::numeric_limits<double>::infinity()),
+            viaFmt(std::numeric_limits<double>::infinity()));
   EXPECT_EQ(viaFast(std::nan("")), viaFmt(std::nan("")));
 }
 

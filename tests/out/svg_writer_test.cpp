@@ -88,7 +88,7 @@ TEST(SvgWriter, LineIsWellFormedWithHeaderLegendAndNonScalingStrokes) {
   EXPECT_NE(svg.find("<path class=\"nco-cut\" vector-effect=\"non-scaling-stroke\""),
             std::string::npos);
   // Every <path> and <circle> has a non-scaling stroke.
-  EXPECT_EQ(count(svg, "<path "), count(svg, "<path class=\"nco-") );
+  EXPECT_EQ(count(svg, "<path "), count(svg, "<path class=\"nco-"));
   EXPECT_EQ(count(svg, "<path "), count(svg, "vector-effect=\"non-scaling-stroke\""));
 }
 
@@ -119,15 +119,13 @@ TEST(SvgWriter, ArcFlagsG17AfterTheYFlip) {
 
 // G18: Z to the right, X up, seen from +Y; G19: Y right, Z up, seen from +X.
 TEST(SvgWriter, ArcFlagsG18AndG19) {
-  std::string g18 =
-      draw(View::ZX, {arcSeg(1, Motion::G3, {0, 0, 10}, {10, 0, 0}, {0, 0, 0}, kY)});
+  std::string g18 = draw(View::ZX, {arcSeg(1, Motion::G3, {0, 0, 10}, {10, 0, 0}, {0, 0, 0}, kY)});
   EXPECT_EQ(pathData(g18), std::vector<std::string>{"M10 0A10 10 0 0 0 0 -10"});
   std::string g18cw =
       draw(View::ZX, {arcSeg(1, Motion::G2, {10, 0, 0}, {0, 0, 10}, {0, 0, 0}, kY)});
   EXPECT_EQ(pathData(g18cw), std::vector<std::string>{"M0 -10A10 10 0 0 1 10 0"});
   EXPECT_NE(g18.find("view ZX (G18): Z right, X up"), std::string::npos);
-  std::string g19 =
-      draw(View::YZ, {arcSeg(1, Motion::G3, {0, 10, 0}, {0, 0, 10}, {0, 0, 0}, kX)});
+  std::string g19 = draw(View::YZ, {arcSeg(1, Motion::G3, {0, 10, 0}, {0, 0, 10}, {0, 0, 0}, kX)});
   EXPECT_EQ(pathData(g19), std::vector<std::string>{"M10 0A10 10 0 0 0 0 -10"});
   std::string g19cw =
       draw(View::YZ, {arcSeg(1, Motion::G2, {0, 0, 10}, {0, 10, 0}, {0, 0, 0}, kX)});
@@ -136,8 +134,7 @@ TEST(SvgWriter, ArcFlagsG18AndG19) {
 
 // Seen from the side an arc is chords of at most one degree (no SVG arc).
 TEST(SvgWriter, ArcOutOfTheViewPlaneIsAPolyline) {
-  std::string svg =
-      draw(View::ZX, {arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 0}, {0, 0, 0}, kZ)});
+  std::string svg = draw(View::ZX, {arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 0}, {0, 0, 0}, kZ)});
   auto d = pathData(svg);
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].find('A'), std::string::npos);
@@ -149,8 +146,7 @@ TEST(SvgWriter, ArcOutOfTheViewPlaneIsAPolyline) {
 
 TEST(SvgWriter, FullCircleAndHelixWithTurns) {
   // A full circle: several SVG arcs (one cannot start and end on the same point).
-  std::string full =
-      draw(View::XY, {arcSeg(1, Motion::G2, {10, 0, 0}, {10, 0, 0}, {0, 0, 0}, kZ)});
+  std::string full = draw(View::XY, {arcSeg(1, Motion::G2, {10, 0, 0}, {10, 0, 0}, {0, 0, 0}, kZ)});
   auto d = pathData(full);
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(count(d[0], "A"), 3u) << d[0];
@@ -178,8 +174,8 @@ TEST(SvgWriter, ViewBoxCoversEveryPointOfBothPaths) {
                                arcSeg(2, Motion::G2, {-50, 1, 0}, {-30, 1, 0}, {-40, 1, 0}, kZ)};
   std::string svg = draw(View::XY, path, nullptr, prog);
   ViewBox b = viewBox(svg);
-  for (auto [h, v] : std::vector<std::pair<double, double>>{{0, 0}, {-50, 3}, {0, -2}, {-50, 1},
-                                                             {-40, 11}, {-30, 1}})
+  for (auto [h, v] : std::vector<std::pair<double, double>>{
+           {0, 0}, {-50, 3}, {0, -2}, {-50, 1}, {-40, 11}, {-30, 1}})
     EXPECT_TRUE(b.covers(h, v)) << h << "," << v;
   auto pd = pathData(svg, "programmed");
   EXPECT_EQ(pd, std::vector<std::string>{"M0 0L-50 -3"});
@@ -249,8 +245,11 @@ TEST(XmlEscape, MarkupControlsAndInvalidUtf8) {
   };
   EXPECT_EQ(esc("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
   EXPECT_EQ(esc("x\x01y\tz"), "x y\tz");
-  EXPECT_EQ(esc("\xC3\x98l"), "\xC3\x98l");              // valid UTF-8 passes
-  EXPECT_EQ(esc("\xFF" "a\xC3"), "\xEF\xBF\xBD" "a\xEF\xBF\xBD");  // invalid bytes, cut sequence
+  EXPECT_EQ(esc("\xC3\x98l"), "\xC3\x98l");  // valid UTF-8 passes
+  EXPECT_EQ(esc("\xFF"
+                "a\xC3"),
+            "\xEF\xBF\xBD"
+            "a\xEF\xBF\xBD");  // invalid bytes, cut sequence
   EXPECT_EQ(esc("\xED\xA0\x80"), "\xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD");  // a surrogate
 }
 

@@ -74,8 +74,8 @@ inline std::string tagBalance(const std::string& doc, const std::vector<std::str
     if (tag.empty()) return "empty tag";
     if (tag[0] == '?' || tag[0] == '!' || tag.back() == '/') continue;
     bool closing = tag[0] == '/';
-    std::string name = tag.substr(closing ? 1 : 0, tag.find_first_of(" \t\n", closing ? 1 : 0) -
-                                                       (closing ? 1 : 0));
+    std::string name = tag.substr(closing ? 1 : 0,
+                                  tag.find_first_of(" \t\n", closing ? 1 : 0) - (closing ? 1 : 0));
     bool is_void = false;
     for (const auto& v : voids) is_void = is_void || v == name;
     if (is_void) continue;

@@ -69,8 +69,8 @@ TEST(CsvWriter, RowsForLinesAndArcs) {
   auto l = lines(readAll(f.get()));
   ASSERT_EQ(l.size(), 5u);
   EXPECT_EQ(l[0], kHeader);
-  EXPECT_EQ(l[1], "3,G0,0,0,5,,,,");          // no centre, no feed for G0
-  EXPECT_EQ(l[2], "4,G1,10,-2.5,5,,,,100");   // empty centre for lines
+  EXPECT_EQ(l[1], "3,G0,0,0,5,,,,");         // no centre, no feed for G0
+  EXPECT_EQ(l[2], "4,G1,10,-2.5,5,,,,100");  // empty centre for lines
   EXPECT_EQ(l[3], "5,G2,20,-2.5,5,15,-2.5,5,100");
   EXPECT_EQ(l[4], "6,G3,10,-2.5,5,15,-2.5,5,250.5");
 }
@@ -152,9 +152,8 @@ TEST(JsonLinesWriter, SegmentsMessagesAndAlarmRecord) {
   auto l = lines(readAll(f.get()));
   ASSERT_EQ(l.size(), 4u);
   EXPECT_EQ(l[0], R"({"line":1,"file":"MAIN.MPF","motion":"G0","x":0,"y":0,"z":5})");
-  EXPECT_EQ(l[1],
-            R"({"line":2,"file":"dir\\SUB \"1\".SPF","motion":"G2","x":20,"y":0,"z":5,)"
-            R"("cx":15,"cy":0,"cz":5,"normal":[0,0,1],"turns":2,"feed":100})");
+  EXPECT_EQ(l[1], R"({"line":2,"file":"dir\\SUB \"1\".SPF","motion":"G2","x":20,"y":0,"z":5,)"
+                  R"("cx":15,"cy":0,"cz":5,"normal":[0,0,1],"turns":2,"feed":100})");
   EXPECT_EQ(l[2], R"({"message":"tab\u0009here \"quoted\"","file":"MAIN.MPF","line":3})");
   EXPECT_EQ(l[3],
             R"({"alarm":14040,"file":"MAIN.MPF","line":4,"text":"error in end point of circle"})");
@@ -170,8 +169,9 @@ TEST(JsonLinesWriter, NoAlarmRecordOnNormalEnd) {
   }
   auto l = lines(readAll(f.get()));
   ASSERT_EQ(l.size(), 1u);
-  EXPECT_EQ(l[0],
-            R"({"line":1,"file":"MAIN.MPF","motion":"G1","x":0.1,"y":0.3333333333333333,"z":0,"feed":5})");
+  EXPECT_EQ(
+      l[0],
+      R"({"line":1,"file":"MAIN.MPF","motion":"G1","x":0.1,"y":0.3333333333333333,"z":0,"feed":5})");
 }
 
 TEST(JsonString, Escaping) {

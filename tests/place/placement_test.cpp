@@ -37,7 +37,9 @@ MotionBlock quarterArc(Motion m = Motion::G2) {
   return b;
 }
 
-Affine affineOf(const Frame& f) { return f.affine(); }
+Affine affineOf(const Frame& f) {
+  return f.affine();
+}
 
 Segment place(const MotionBlock& b, CoordSystem cs) {
   Collect sink;

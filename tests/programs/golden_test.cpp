@@ -29,7 +29,9 @@ struct Case {
   std::string name;
 };
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.name;
+}
 
 std::vector<Case> discover() {
   std::vector<Case> cases;
@@ -48,7 +50,8 @@ std::vector<Case> discover() {
       if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
     cases.push_back({mpf, e.path(), name});
   }
-  std::sort(cases.begin(), cases.end(), [](const Case& a, const Case& b) { return a.name < b.name; });
+  std::sort(cases.begin(), cases.end(),
+            [](const Case& a, const Case& b) { return a.name < b.name; });
   return cases;
 }
 
@@ -105,11 +108,16 @@ TEST_P(Golden, MatchesExpected) {
   int status = 0;
   std::vector<std::string> want_err, want_csv;
   for (const auto& l : lines(readAll(c.expected))) {
-    if (l.rfind("# args:", 0) == 0) args = l.substr(7);
-    else if (l.rfind("# status:", 0) == 0) status = std::atoi(l.substr(9).c_str());
-    else if (l.rfind("# stderr:", 0) == 0) want_err.push_back(l.substr(l.size() > 9 && l[9] == ' ' ? 10 : 9));
-    else if (l.rfind("#", 0) == 0 || l.empty()) continue;
-    else want_csv.push_back(l);
+    if (l.rfind("# args:", 0) == 0)
+      args = l.substr(7);
+    else if (l.rfind("# status:", 0) == 0)
+      status = std::atoi(l.substr(9).c_str());
+    else if (l.rfind("# stderr:", 0) == 0)
+      want_err.push_back(l.substr(l.size() > 9 && l[9] == ' ' ? 10 : 9));
+    else if (l.rfind("#", 0) == 0 || l.empty())
+      continue;
+    else
+      want_csv.push_back(l);
   }
   fs::path dir = c.program.parent_path();
   fs::path tmp = fs::temp_directory_path() / ("ncoffset_golden_" + c.name);
@@ -131,7 +139,8 @@ TEST_P(Golden, MatchesExpected) {
                                             : got_err[i] == w;
     EXPECT_TRUE(ok) << "stderr line " << i + 1 << "\n  want: " << w << "\n  got:  " << got_err[i];
   }
-  ASSERT_EQ(got_csv.size(), want_csv.size()) << "CSV rows differ; got:\n" << readAll(tmp.string() + ".csv");
+  ASSERT_EQ(got_csv.size(), want_csv.size()) << "CSV rows differ; got:\n"
+                                             << readAll(tmp.string() + ".csv");
   for (size_t i = 0; i < want_csv.size(); ++i) {
     auto w = split(want_csv[i]);
     auto g = split(got_csv[i]);

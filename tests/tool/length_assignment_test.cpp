@@ -51,7 +51,7 @@ std::vector<Row> rows() {
     r.push_back({500, -17, 0, p, place(X, Y, Z)});
     r.push_back({500, -18, 0, p, place(Z, X, Y)});
     r.push_back({500, -19, 0, p, place(Y, Z, X)});
-    r.push_back({500, 5, 0, p, place(X, Z, Y)});     // any other value -> 18
+    r.push_back({500, 5, 0, p, place(X, Z, Y)});  // any other value -> 18
     r.push_back({500, -5, 0, p, place(X, Z, Y)});
     r.push_back({500, 20, 0, p, place(X, Z, Y)});
     // Other tools.
@@ -61,7 +61,7 @@ std::vector<Row> rows() {
     r.push_back({120, -17, 0, p, place(Z, X, Y)});
     r.push_back({120, -18, 0, p, place(Y, Z, X)});
     r.push_back({120, -19, 0, p, place(X, Y, Z)});
-    r.push_back({120, 5, 0, p, place(Z, Y, X)});     // any other value -> 17
+    r.push_back({120, 5, 0, p, place(Z, Y, X)});  // any other value -> 17
     r.push_back({120, 99, 0, p, place(Z, Y, X)});
     // Hundreds digit 1: the sign of L2 is inverted (details §3 decoding).
     r.push_back({120, 117, 0, p, place(Z, Y, X, -1)});
@@ -93,9 +93,9 @@ TEST(LengthAssignment, EveryTableRow) {
     s.length_const = row.sd42940;
     s.length_type = row.sd42950;
     Vec3 v = lengthVector(e, s, row.plane, {false, false, false});
-    SCOPED_TRACE(testing::Message() << "type " << row.type << " SD42940 " << row.sd42940
-                                    << " SD42950 " << row.sd42950 << " plane G"
-                                    << 17 + static_cast<int>(row.plane));
+    SCOPED_TRACE(testing::Message()
+                 << "type " << row.type << " SD42940 " << row.sd42940 << " SD42950 " << row.sd42950
+                 << " plane G" << 17 + static_cast<int>(row.plane));
     EXPECT_NEAR(v.x, row.expected.x, 1e-9);
     EXPECT_NEAR(v.y, row.expected.y, 1e-9);
     EXPECT_NEAR(v.z, row.expected.z, 1e-9);
@@ -216,8 +216,8 @@ namespace {
 
 TEST(CuttingEdgePosition, TipFromCentreTable) {
   // Spec §7 table, r = 0.8.
-  const double want[10][2] = {{0, 0},     {.8, .8}, {.8, -.8}, {-.8, -.8}, {-.8, .8},
-                              {0, .8},    {.8, 0},  {0, -.8},  {-.8, 0},   {0, 0}};
+  const double want[10][2] = {{0, 0},  {.8, .8}, {.8, -.8}, {-.8, -.8}, {-.8, .8},
+                              {0, .8}, {.8, 0},  {0, -.8},  {-.8, 0},   {0, 0}};
   for (int sl = 0; sl <= 9; ++sl) {
     auto p = tipFromEdgeCentre(sl, 0.8);
     EXPECT_DOUBLE_EQ(p[0], want[sl][0]) << "SL " << sl;

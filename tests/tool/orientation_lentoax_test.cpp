@@ -122,7 +122,7 @@ TEST(Lentoax, DerivedCases) {
   ToolSettings t2;
   t2.length_type = 2;
   EXPECT_EQ(run(mill(), t2, Plane::G17, Frame{}).axind, (std::array<int, 3>{2, 1, 3}));  // L-7
-  EXPECT_EQ(run(mill(), {}, Plane::G17, Frame{}, "XYZ").status, -1);  // L-9
+  EXPECT_EQ(run(mill(), {}, Plane::G17, Frame{}, "XYZ").status, -1);                     // L-9
   Frame z90;
   z90.rotation = {0, 0, 90};
   LentoaxResult r10 = run(mill(), {}, Plane::G17, z90);

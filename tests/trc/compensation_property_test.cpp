@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -62,7 +62,8 @@ TEST(CompensationProperty, RandomClosedContoursStayAtTheRadius) {
     std::vector<P2> poly;
     for (double a : ang) {
       double rad = 30 + unit(rng) * 30;
-      poly.push_back({std::round(rad * std::cos(a) * 1000) / 1000, std::round(rad * std::sin(a) * 1000) / 1000});
+      poly.push_back({std::round(rad * std::cos(a) * 1000) / 1000,
+                      std::round(rad * std::sin(a) * 1000) / 1000});
     }
     const bool left = unit(rng) < 0.5, intersection = unit(rng) < 0.5;
     std::ostringstream prog;
@@ -80,7 +81,8 @@ TEST(CompensationProperty, RandomClosedContoursStayAtTheRadius) {
     Collect out;
     RunResult res = ch.runText("P.MPF", prog.str(), out);
     if (res.status != RunResult::Status::Ok) {  // an alarm (e.g. a bottleneck) is allowed
-      if (std::getenv("NCOFFSET_DEBUG_PROPERTY")) std::fprintf(stderr, "%s\n", res.alarm->text.c_str());
+      if (std::getenv("NCOFFSET_DEBUG_PROPERTY"))
+        std::fprintf(stderr, "%s\n", res.alarm->text.c_str());
       continue;
     }
     ++contours;
@@ -96,14 +98,17 @@ TEST(CompensationProperty, RandomClosedContoursStayAtTheRadius) {
         const P2 p = samplePoint(s, j / 20.0);
         double d = 1e300;
         for (int e = 0; e < n; ++e)
-          d = std::min(d, segmentDistance(p, poly[static_cast<size_t>(e)], poly[static_cast<size_t>((e + 1) % n)]));
+          d = std::min(d, segmentDistance(p, poly[static_cast<size_t>(e)],
+                                          poly[static_cast<size_t>((e + 1) % n)]));
         // G450: exactly R everywhere (equidistants and circles about the corners). G451: the
         // intersections of extended equidistants lie farther out at outside corners: >= R.
         if (intersection)
-          EXPECT_GE(d, r - 1e-7) << "contour " << iter << " row " << k << " (line " << s.line << ")\n"
+          EXPECT_GE(d, r - 1e-7) << "contour " << iter << " row " << k << " (line " << s.line
+                                 << ")\n"
                                  << prog.str();
         else
-          EXPECT_NEAR(d, r, 1e-7) << "contour " << iter << " row " << k << " (line " << s.line << ")\n"
+          EXPECT_NEAR(d, r, 1e-7) << "contour " << iter << " row " << k << " (line " << s.line
+                                  << ")\n"
                                   << prog.str();
         ++checked;
       }
@@ -135,7 +140,6 @@ double edgeDistance(P2 p, const Edge& e) {
   if (at <= sweep) return std::fabs(std::hypot(p.x - e.c.x, p.y - e.c.y) - rad);
   return std::min(std::hypot(p.x - e.a.x, p.y - e.a.y), std::hypot(p.x - e.b.x, p.y - e.b.y));
 }
-
 
 // The same property on contours of lines and arcs (convex and concave), with CDON or CDOF: the
 // compensated path keeps at least R from every element, exactly R with G450, also where the
@@ -173,9 +177,9 @@ TEST(CompensationProperty, RandomContoursWithArcsStayAtTheRadius) {
     std::ostringstream prog;
     prog.precision(17);
     prog << "$MC_CUTCOM_CURVE_INSERT_LIMIT=0\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=" << r
-         << "\nT1 D1\nG17 G90 G0 X0 Y0 Z0\n" << (intersection ? "G451" : "G450")
-         << (cdon ? " CDON\n" : " CDOF\n") << (left ? "G41" : "G42") << " G1 X" << poly[0].x
-         << " Y" << poly[0].y << " F100\n";
+         << "\nT1 D1\nG17 G90 G0 X0 Y0 Z0\n"
+         << (intersection ? "G451" : "G450") << (cdon ? " CDON\n" : " CDOF\n")
+         << (left ? "G41" : "G42") << " G1 X" << poly[0].x << " Y" << poly[0].y << " F100\n";
     for (int i = 0; i <= n; ++i) {
       const Edge& e = edges[static_cast<size_t>(i % n)];
       if (e.arc)
@@ -189,7 +193,8 @@ TEST(CompensationProperty, RandomContoursWithArcsStayAtTheRadius) {
     Collect out;
     RunResult res = ch.runText("P.MPF", prog.str(), out);
     if (res.status != RunResult::Status::Ok) {
-      if (std::getenv("NCOFFSET_DEBUG_PROPERTY")) std::fprintf(stderr, "%s\n", res.alarm->text.c_str());
+      if (std::getenv("NCOFFSET_DEBUG_PROPERTY"))
+        std::fprintf(stderr, "%s\n", res.alarm->text.c_str());
       continue;
     }
     ++contours;

@@ -1,7 +1,7 @@
 // ncoffset command line: the contract of docs/cli.md (design.md "Command-line contract").
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -66,22 +66,33 @@ int main(int argc, char** argv) {
   app.add_option("--vars", vars, "write R parameters and user variables as JSON");
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-line-length", l.max_line_length, "characters per block (alarm 99001)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-expression-depth", l.max_expression_depth,
-                 "expression nesting (alarm 99003)")->capture_default_str()->check(CLI::PositiveNumber);
+                 "expression nesting (alarm 99003)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-program-levels", l.max_program_levels,
-                 "main program + subprogram levels (alarm 14012)")->capture_default_str()->check(CLI::PositiveNumber);
+                 "main program + subprogram levels (alarm 14012)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-control-depth", l.max_control_depth,
-                 "nested control structures per level (alarm 12641)")->capture_default_str()->check(CLI::PositiveNumber);
+                 "nested control structures per level (alarm 12641)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-variables", l.max_variables, "user variables (alarm 99004)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-total-elements", l.max_total_elements,
                  "array elements of all variables together (alarm 99005)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--max-array-elements", l.max_array_elements, "elements per array (alarm 99005)")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -96,7 +107,8 @@ int main(int argc, char** argv) {
   if (!output.empty()) {
     out = std::fopen(output.c_str(), "wb");
     if (!out) {
-      std::fprintf(stderr, "ncoffset: %s: cannot write: %s\n", output.c_str(), std::strerror(errno));
+      std::fprintf(stderr, "ncoffset: %s: cannot write: %s\n", output.c_str(),
+                   std::strerror(errno));
       return 1;
     }
   }
