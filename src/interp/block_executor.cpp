@@ -281,7 +281,7 @@ void Interpreter::gCode(int g) {
     case 18:
     case 19: {
       Plane p = g == 17 ? Plane::G17 : g == 18 ? Plane::G18 : Plane::G19;
-      if (p != modal_.plane && modal_.trc != 40)
+      if (p != modal_.plane && modal_.trc != core::TrcMode::Off)
         raise(10757,
               "change of compensation plane not possible while tool radius compensation is active");
       modal_.plane = p;
@@ -292,9 +292,13 @@ void Interpreter::gCode(int g) {
       words_.axial_offset = g;
       return;  // limits: axis values are not motion
     case 40:
+      modal_.trc = core::TrcMode::Off;
+      return;
     case 41:
+      modal_.trc = core::TrcMode::Left;
+      return;
     case 42:
-      modal_.trc = g;
+      modal_.trc = core::TrcMode::Right;
       return;
     case 53:
     case 153:
@@ -349,14 +353,22 @@ void Interpreter::gCode(int g) {
       modal_.feed_type = FeedType::G97;
       return;
     case 140:
+      modal_.sar_side = core::SarSide::G140;
+      return;
     case 141:
+      modal_.sar_side = core::SarSide::G141;
+      return;
     case 142:
+      modal_.sar_side = core::SarSide::G142;
+      return;
     case 143:
-      modal_.sar_side = g;
+      modal_.sar_side = core::SarSide::G143;
       return;
     case 340:
+      modal_.sar_infeed = core::SarInfeed::G340;
+      return;
     case 341:
-      modal_.sar_plane = g;
+      modal_.sar_infeed = core::SarInfeed::G341;
       return;
     case 450:
       modal_.corner = CornerMode::TransitionCircle;
@@ -365,18 +377,31 @@ void Interpreter::gCode(int g) {
       modal_.corner = CornerMode::Intersection;
       return;
     case 460:
+      modal_.trc_strategy = core::TrcStrategy::G460;
+      return;
     case 461:
+      modal_.trc_strategy = core::TrcStrategy::G461;
+      return;
     case 462:
-      modal_.trc_strategy = g;
+      modal_.trc_strategy = core::TrcStrategy::G462;
       return;
     case 147:
+      setSar(core::SarKind::Line147);
+      return;
     case 148:
+      setSar(core::SarKind::Line148);
+      return;
     case 247:
+      setSar(core::SarKind::Quadrant247);
+      return;
     case 248:
+      setSar(core::SarKind::Quadrant248);
+      return;
     case 347:
+      setSar(core::SarKind::Semicircle347);
+      return;
     case 348:
-      if (words_.sar) raise(10743, "SAR programmed several times in one block");
-      words_.sar = g;
+      setSar(core::SarKind::Semicircle348);
       return;
     case 33:
     case 34:
@@ -402,6 +427,11 @@ void Interpreter::gCode(int g) {
     return;
   }
   raise(alarm_no::kUnknownGCode, fmt::format("G function G{} is unknown", g));
+}
+
+void Interpreter::setSar(core::SarKind kind) {
+  if (words_.sar != core::SarKind::None) raise(10743, "SAR programmed several times in one block");
+  words_.sar = kind;
 }
 
 void Interpreter::namedWord(const Stmt& st) {
@@ -449,8 +479,7 @@ void Interpreter::namedWord(const Stmt& st) {
     return;
   }
   if (w == "STOPRE") {
-    sar_.preprocessorStop();
-    trc_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
+    first_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
     return;
   }
   if (isOneOf(w, {"STOPRE",  "BRISK",  "SOFT",    "DRIVE",   "FFWON",  "FFWOF",  "CFC",    "CFTCP",
@@ -463,10 +492,6 @@ void Interpreter::namedWord(const Stmt& st) {
                "INVCW",  "INVCCW",   "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL",  "PCALL",  "MCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
   words_.call = w;
-}
-
-Vec3 Interpreter::bcsOfWcs(Vec3 wcs) const {
-  return act_.apply(wcs);
 }
 
 void Interpreter::finishBlock() {
@@ -511,12 +536,12 @@ void Interpreter::finishBlock() {
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   block_moved_ = false;
-  if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar)) doMotion();
+  if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
+    doMotion();
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
   // compensated elements counts against MD20250.
-  if (!block_moved_ && sar_.active() && !block_.stmts.empty() &&
-      block_.stmts.front().kind == lang::StmtKind::Word)
-    sar_.blockWithoutMotion();
+  if (!block_moved_ && !block_.stmts.empty() && block_.stmts.front().kind == lang::StmtKind::Word)
+    first_.blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
     if (levels_.size() > 1)
@@ -538,8 +563,8 @@ void Interpreter::finishBlock() {
 
 void Interpreter::doMotion() {
   const bool suppress = words_.suppress_frames != 0;
-  static const Affine kNoFrame;
-  const Affine& frame = suppress ? kNoFrame : act_;
+  static const core::BlockFrame kNoFrame;
+  const Affine& frame = suppress ? kNoFrame.map() : act_;
   // Without a frame WCS = BCS: the products below are skipped (the usual case).
   const bool plain = suppress || act_identity_;
   auto toBcs = [&](const Vec3& p) { return plain ? p : frame.apply(p); };
@@ -559,13 +584,15 @@ void Interpreter::doMotion() {
   }
   // The interpreter's one motion block, reused: every member is set below (no zeroing of the
   // whole block for every motion). Later stages copy what they keep.
-  place::MotionBlock& m = motion_;
+  core::MotionBlock& m = motion_;
   m.motion = modal_.motion;
   // A SAR block is a linear block: its own G0/G1 (G2/G3 modal count as G1) moves P2 -> P0.
-  if (words_.sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
-  m.frame = frame;
-  m.frame_serial = suppress ? 0 : act_serial_;
-  m.frame_identity = plain;
+  const bool sar = words_.sar != core::SarKind::None;
+  if (sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
+  // The block keeps its frame from the last motion while the frame state is the same (the
+  // usual case: no copy of the map per block).
+  const core::BlockFrame& block_frame = suppress ? kNoFrame : act_frame_;
+  if (m.frame.state() != block_frame.state()) m.frame = block_frame;
   m.line = line_;
   m.file = file_;
   m.start = suppress ? bcs_ : wcsOf(bcs_);
@@ -579,7 +606,7 @@ void Interpreter::doMotion() {
     m.feed = 0;
     m.has_feed = false;
   }
-  m.sar = nullptr;
+  m.sar.kind = core::SarKind::None;
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     PlaneAxes pa = planeAxes(modal_.plane);
     if (words_.centre[pa.applicate])
@@ -645,7 +672,7 @@ void Interpreter::doMotion() {
     }
     Vec3 moved = (toBcs(target) + applied_offset_) - (bcs_ + before);
     if (std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12 &&
-        !words_.sar) {
+        !sar) {
       wcs_ = suppress ? wcsOf(bcs_) : target;
       return;  // zero-length block: no segment
     }
@@ -680,13 +707,12 @@ void Interpreter::doMotion() {
                         "XYZ"[i]));
     }
   block_moved_ = true;
-  if (words_.sar) {
-    sar_request_ = SarRequest{};
-    SarRequest& q = sar_request_;
-    m.sar = &q;
-    q.type = words_.sar;
+  if (sar) {
+    m.sar = core::SarRequest{};
+    core::SarRequest& q = m.sar;
+    q.kind = words_.sar;
     q.side = modal_.sar_side;
-    q.space = modal_.sar_plane;
+    q.infeed = modal_.sar_infeed;
     q.has_disr = words_.disr.has_value();
     q.disr = words_.disr.value_or(0);
     q.has_discl = words_.discl.has_value();
@@ -703,13 +729,14 @@ void Interpreter::doMotion() {
     q.f_programmed = words_.f.has_value();
     q.feed_value = modal_.feed;
     q.feed_before = feed_before_;
-    q.motion_before = motion_before_ == Motion::G0 ? 0 : 1;
-    sar_.setMaxDummyBlocks(static_cast<int>(data_.get(md_sar_dummy_blocks_)));
+    q.rapid_before = motion_before_ == Motion::G0;
+    q.max_dummy_blocks = static_cast<int>(data_.get(md_sar_dummy_blocks_));
   } else if (words_.disr || words_.discl || words_.disrp || words_.fad) {
     raise(alarm_no::kSyntaxError, "DISR, DISCL, DISRP and FAD only in a SAR block (G147..G348)");
   }
-  sar_.motion(m);
-  if (auto end = sar_.takeEndOverride()) target = *end;  // implicit retraction end point
+  core::Feedback back = first_.motion(m);
+  if (back.approach) approach_points_ = *back.approach;
+  if (back.end_point) target = *back.end_point;  // implicit retraction end point
   bcs_ = toBcs(target);
   wcs_ = suppress ? wcsOf(bcs_) : target;
 }
@@ -780,6 +807,7 @@ void Interpreter::updateActiveFrame() {
   act_inverse_ = act_.inverse();
   act_identity_ = act_.isIdentity();
   ++act_serial_;
+  act_frame_ = core::BlockFrame(act_, act_serial_, act_identity_);
 }
 
 }  // namespace ncoffset::interp

@@ -1,9 +1,12 @@
-// The public Channel: wires the interpreter and turns AlarmError into an Alarm value.
+// The public Channel: wires the stages and turns AlarmError into an Alarm value.
 #include "ncoffset/channel.hpp"
 
 #include <fmt/format.h>
 
 #include "interp/interpreter.hpp"
+#include "place/placement.hpp"
+#include "trc/radius_compensation.hpp"
+#include "trc/smooth_approach.hpp"
 
 namespace ncoffset {
 
@@ -23,13 +26,20 @@ class SwitchSink final : public PathSink {
 };
 }  // namespace
 
+// The chain of stages (docs/architecture.md): interpreter -> smooth approach -> radius
+// compensation -> placement -> sink. Each stage knows only the one after it.
 struct Channel::Impl {
-  explicit Impl(const RunOptions& o) : interp(o, sink) {}
+  explicit Impl(const RunOptions& o)
+      : placement(sink, o.coords), trc(placement), sar(trc), interp(o, sink, sar) {}
   SwitchSink sink;
+  place::Placement placement;
+  trc::RadiusCompensation trc;
+  trc::SmoothApproach sar;
   interp::Interpreter interp;
 
   RunResult run(std::shared_ptr<lang::SourceFile> src, PathSink& out, bool init, bool finish) {
     sink.target = &out;
+    placement.beginRun([this](int id) -> const std::string& { return interp.fileName(id); });
     RunResult r;
     try {
       interp::LoadedProgram& prog = interp.load(std::move(src));

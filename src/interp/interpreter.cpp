@@ -18,14 +18,8 @@ using lang::StmtKind;
 using lang::TextPos;
 using lang::Value;
 
-Interpreter::Interpreter(const RunOptions& options, PathSink& sink)
-    : options_(options),
-      placement_(sink, options.coords),
-      trc_(placement_),
-      sar_(trc_),
-      sink_(sink),
-      eval_(*this),
-      uifr_(100) {
+Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage& first)
+    : options_(options), first_(first), sink_(sink), eval_(*this), uifr_(100) {
   r_.assign(static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM")), 0.0);
   md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
   md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
@@ -73,7 +67,6 @@ SourceLoc Interpreter::alarmLoc(const AlarmError& e) const {
 void Interpreter::run(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
   ended_ = false;
-  placement_.beginRun([this](int id) -> const std::string& { return fileName(id); });
   levels_.clear();
   ProgramLevel main;
   main.program = &program;
@@ -111,7 +104,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     }
   }
   if (!init_file) {
-    sar_.finish();  // the last compensated element ends on its normal
+    first_.flush();  // the last compensated element ends on its normal
     main_vars_ = std::move(levels_.front().locals);
   }
   levels_.clear();
@@ -729,10 +722,10 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
       active_tool_, active_edge_, l.total[0], l.total[1], l.total[2], l.radius, o.x + 0.0,
       o.y + 0.0, o.z + 0.0, len.x + 0.0, len.y + 0.0, len.z + 0.0);
   // Smooth approach: P3 and P4 of the last evaluated approach (WCS), $P_APDV.
-  const Vec3 apr = sar_.apr(), aep = sar_.aep();
+  const Vec3 apr = approach_points_.apr, aep = approach_points_.aep;
   out << fmt::format(", \"$P_APR\": [{},{},{}], \"$P_AEP\": [{},{},{}], \"$P_APDV\": {}",
                      apr.x + 0.0, apr.y + 0.0, apr.z + 0.0, aep.x + 0.0, aep.y + 0.0, aep.z + 0.0,
-                     sar_.apdv() ? 1 : 0);
+                     approach_points_.valid ? 1 : 0);
   std::map<std::string, const UserVariable*> sorted;
   for (const auto& [k, v] : globals_) sorted[k] = &v;
   const VariableMap& main = levels_.empty() ? main_vars_ : levels_.front().locals;

@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/stage.hpp"
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
 #include "interp/variables.hpp"
@@ -20,10 +21,7 @@
 #include "lang/source_file.hpp"
 #include "ncoffset/channel.hpp"
 #include "ncoffset/frame.hpp"
-#include "place/placement.hpp"
 #include "tool/tool_store.hpp"
-#include "trc/radius_compensation.hpp"
-#include "trc/smooth_approach.hpp"
 
 namespace ncoffset::interp {
 
@@ -46,7 +44,8 @@ struct ProgramLevel {
 
 class Interpreter final : public lang::Environment {
  public:
-  Interpreter(const RunOptions& options, PathSink& sink);
+  // `first`: the stage that takes the motion blocks (smooth approach); `sink`: MSG texts.
+  Interpreter(const RunOptions& options, PathSink& sink, core::Stage& first);
   ~Interpreter() override;
 
   // Runs a file as an init file or as the main program. Throws AlarmError; `alarmLoc()` then
@@ -92,10 +91,10 @@ class Interpreter final : public lang::Environment {
   void collectWord(const lang::Stmt& st);
   void namedWord(const lang::Stmt& st);
   void gCode(int code);
+  void setSar(core::SarKind kind);
   void finishBlock();
   void doMotion();
   void doFrameCommand();
-  Vec3 bcsOfWcs(Vec3 wcs) const;
   double toMm(double v) const;
 
   // --- tool data and selection (tool_selection.cpp) ---
@@ -120,12 +119,10 @@ class Interpreter final : public lang::Environment {
   void updateActiveFrame();
 
   RunOptions options_;
-  place::Placement placement_;
-  trc::RadiusCompensation trc_;
-  trc::SmoothApproach sar_;
-  SarRequest sar_request_;             // of the current block (MotionBlock::sar points here)
-  double feed_before_ = 0;             // the modal feed before the current block
-  Motion motion_before_ = Motion::G0;  // the modal G0..G3 before the current block
+  core::Stage& first_;
+  core::ApproachPoints approach_points_;  // $P_APR, $P_AEP, $P_APDV as fed back
+  double feed_before_ = 0;                // the modal feed before the current block
+  Motion motion_before_ = Motion::G0;     // the modal G0..G3 before the current block
   PathSink& sink_;
   lang::Evaluator eval_;
   MachineData data_;
@@ -163,9 +160,10 @@ class Interpreter final : public lang::Environment {
   Frame pframe_;
   Affine act_;
   Affine act_inverse_;
-  place::MotionBlock motion_;          // doMotion's block (reused, see there)
+  core::MotionBlock motion_;           // doMotion's block (reused, see there)
   bool act_identity_ = true;           // act_ is exactly the identity: doMotion skips the products
-  unsigned long long act_serial_ = 1;  // counts the changes of act_ (MotionBlock::frame_serial)
+  core::BlockFrame act_frame_;         // act_ as the blocks carry it
+  unsigned long long act_serial_ = 1;  // counts the changes of act_ (BlockFrame::state)
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
   int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0, md_check_blocks_ = 0;

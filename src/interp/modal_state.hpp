@@ -7,6 +7,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "core/compensation.hpp"
 #include "lang/block.hpp"
 #include "ncoffset/geometry.hpp"
 #include "ncoffset/path.hpp"
@@ -18,18 +19,18 @@ enum class Units { G71, G70, G710, G700 };
 enum class FeedType { G93, G94, G95, G96, G97 };
 
 struct ModalState {
-  Motion motion = Motion::G0;  // group 1 (initial G0 per common machine data)
-  Plane plane = Plane::G17;    // group 6
-  bool incremental = false;    // group 14: G90 / G91
-  Units units = Units::G71;    // group 13
-  int trc = 40;                // group 7: 40, 41, 42
+  Motion motion = Motion::G0;              // group 1 (initial G0 per common machine data)
+  Plane plane = Plane::G17;                // group 6
+  bool incremental = false;                // group 14: G90 / G91
+  Units units = Units::G71;                // group 13
+  core::TrcMode trc = core::TrcMode::Off;  // group 7: G40, G41, G42
   CornerMode corner = CornerMode::TransitionCircle;
   Approach approach = Approach::Norm;
   CollisionCheck collision = CollisionCheck::Cdof;
-  int sar_side = 140;      // group 43: G140..G143
-  int sar_plane = 340;     // group 44: G340/G341
-  int trc_strategy = 460;  // group 48: G460..G462
-  int frame_select = 500;  // group 8: 500, 54..57, 505..599
+  core::SarSide sar_side = core::SarSide::G140;              // group 43
+  core::SarInfeed sar_infeed = core::SarInfeed::G340;        // group 44
+  core::TrcStrategy trc_strategy = core::TrcStrategy::G460;  // group 48
+  int frame_select = 500;                                    // group 8: 500, 54..57, 505..599
   FeedType feed_type = FeedType::G94;
   int exact_stop = 64;  // group 10: G60/G64/G641..
   double feed = 0;      // F in mm/min (G94) as the control holds it
@@ -66,7 +67,7 @@ struct BlockWords {
   bool tool_change = false;         // M6 (MD22560) for the master spindle
   std::string_view call;            // subprogram to call at block end (block text or call_name_)
   std::optional<long long> repeat;  // P
-  int sar = 0;                      // G147..G348 (smooth approach / retraction) in this block
+  core::SarKind sar = core::SarKind::None;        // G147..G348 (smooth approach / retraction)
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;
   int column = 0;

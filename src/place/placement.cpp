@@ -4,9 +4,8 @@
 
 namespace ncoffset::place {
 
-Segment Placement::toSegment(const MotionBlock& m) const {
-  return toSegment(m, {m.motion, m.start, m.end, m.centre, m.applicate, m.turns});
-}
+using core::Geometry;
+using core::MotionBlock;
 
 Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
   Segment s;
@@ -23,21 +22,21 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
     s.end = g.end;
     s.centre = g.centre;
     s.normal = normal;
-  } else if (m.frame_identity) {  // no frame: only the tool offset
+  } else if (m.frame.isIdentity()) {  // no frame: only the tool offset
     s.start = g.start + m.tool_offset;
     s.end = g.end + m.tool_offset;
     if (g.motion == Motion::G2 || g.motion == Motion::G3) s.centre = g.centre + m.tool_offset;
     s.normal = normal;
   } else {
-    s.start = m.frame.apply(g.start) + m.tool_offset;
-    s.end = m.frame.apply(g.end) + m.tool_offset;
+    s.start = m.frame.map().apply(g.start) + m.tool_offset;
+    s.end = m.frame.map().apply(g.end) + m.tool_offset;
     if (g.motion == Motion::G2 || g.motion == Motion::G3) {
-      s.centre = m.frame.apply(g.centre) + m.tool_offset;
+      s.centre = m.frame.map().apply(g.centre) + m.tool_offset;
       // The arc turns about frame * normal; a mirrored frame (det < 0) reverses its sense.
-      Vec3 n = m.frame.linear * normal;
+      Vec3 n = m.frame.linear() * normal;
       double len = norm(n);
       s.normal = len > 0 ? (1.0 / len) * n : normal;
-      bool flip = m.frame.linear.determinant() < 0;
+      bool flip = m.frame.linear().determinant() < 0;
       // Report the sense as seen from the positive end of the dominant machine axis.
       int dom = 0;
       for (int i = 1; i < 3; ++i)
@@ -52,11 +51,12 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
   return s;
 }
 
-void Placement::motion(const MotionBlock& m) {
-  sink_.segment(toSegment(m));
+core::Feedback Placement::motion(const MotionBlock& m) {
+  sink_.segment(toSegment(m, core::geometryOf(m)));
+  return {};
 }
 
-void Placement::motion(const MotionBlock& like, const Geometry& g) {
+void Placement::element(const MotionBlock& like, const Geometry& g) {
   sink_.segment(toSegment(like, g));
 }
 
@@ -66,7 +66,7 @@ void Placement::warning(const MotionBlock& m, int number, const std::string& tex
 }
 
 void Placement::programmedSegment(const MotionBlock& m) {
-  sink_.programmed(toSegment(m));
+  sink_.programmed(toSegment(m, core::geometryOf(m)));
 }
 
 }  // namespace ncoffset::place

@@ -11,9 +11,11 @@
 
 namespace ncoffset::trc {
 
+using core::MotionBlock;
+using core::TrcMode;
+using core::TrcStrategy;
 using geom::Element;
 using geom::Vec2;
-using place::MotionBlock;
 
 namespace {
 
@@ -27,17 +29,6 @@ constexpr double kDiscTolerance = 1e-3;
 [[noreturn]] void notModelled(const std::string& what) {
   raise(alarm_no::kNotModelled,
         fmt::format("{} is not modelled by ncoffset yet (tool radius compensation)", what));
-}
-
-bool sameAffine(const Affine& a, const Affine& b) {
-  if (std::memcmp(&a, &b, sizeof(Affine)) == 0) return true;  // the usual case, bit for bit
-  for (size_t i = 0; i < 3; ++i) {
-    if (std::fabs(a.offset[static_cast<int>(i)] - b.offset[static_cast<int>(i)]) > 1e-12)
-      return false;
-    for (size_t j = 0; j < 3; ++j)
-      if (std::fabs(a.linear.m[i][j] - b.linear.m[i][j]) > 1e-12) return false;
-  }
-  return true;
 }
 
 // The tangent point on the circle about `c` (radius r) of a line through `p` along which the
@@ -97,11 +88,9 @@ Element RadiusCompensation::toElement(const MotionBlock& m) const {
   return e;
 }
 
-place::Placement::Geometry RadiusCompensation::geometry(const MotionBlock& like,
-                                                        const Element& e) const {
+core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Element& e) const {
   PlaneAxes pa = planeAxes(like.plane);
-  place::Placement::Geometry g{like.motion, like.start,     like.end,
-                               like.centre, like.applicate, like.turns};
+  core::Geometry g{like.motion, like.start, like.end, like.centre, like.applicate, like.turns};
   g.start[pa.abscissa] = e.p0.a;
   g.start[pa.ordinate] = e.p0.o;
   g.end[pa.abscissa] = e.p1.a;
@@ -120,7 +109,7 @@ place::Placement::Geometry RadiusCompensation::geometry(const MotionBlock& like,
 }
 
 MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
-  const place::Placement::Geometry g = geometry(like, e);
+  const core::Geometry g = geometry(like, e);
   MotionBlock b = like;
   b.motion = g.motion;
   b.start = g.start;
@@ -156,7 +145,7 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
   p.index = 0;
   p.valid = true;
   p.open_before = p.approach = p.restart = p.emitted = false;
-  p.strategy = 460;
+  p.strategy = TrcStrategy::G460;
   p.transition.clear();
   p.waiting.clear();
   p.block = m;
@@ -219,7 +208,7 @@ void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
 
 void RadiusCompensation::emitPiece(const Piece& p) {
   for (const MotionBlock& t : p.transition) emit(t);
-  out_.motion(p.block, geometry(p.block, p.compensated));  // no copy of the block
+  out_.element(p.block, geometry(p.block, p.compensated));  // no copy of the block
   for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
 }
 
@@ -227,8 +216,7 @@ void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
   if (m.plane != selection_.plane)
     raise(10757,
           "change of compensation plane not possible while tool radius compensation is active");
-  if (m.frame_serial != selection_.frame_serial && !sameAffine(m.frame, selection_.frame))
-    notModelled("a frame change while compensation is active");
+  if (!m.frame.sameAs(selection_.frame)) notModelled("a frame change while compensation is active");
 }
 
 void RadiusCompensation::blockWithoutMotion() {
@@ -239,14 +227,14 @@ void RadiusCompensation::blockWithoutMotion() {
                              settings_.max_dummy_blocks));
 }
 
-void RadiusCompensation::motion(const MotionBlock& m) {
+core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
   out_.programmed(m);
   switch (state_) {
     case State::Off: {
-      const bool wants = m.trc.mode != 40 && std::fabs(m.trc.radius) > 1e-12;
+      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > 1e-12;
       if (!wants || !planeMotion(m)) {
         emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
-        return;
+        return {};
       }
       if (m.motion != Motion::G0 && m.motion != Motion::G1)
         raise(10753, "activation of tool radius compensation only possible in linear block");
@@ -256,23 +244,23 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       selection_ = m;
       state_ = State::Selecting;
       dummy_blocks_ = 0;
-      return;
+      return {};
     }
     case State::Selecting: {
-      if (m.trc.mode == 40) {
+      if (m.trc.mode == TrcMode::Off) {
         // G40 in the block after the selection block: no selection takes place (W1 2-41).
         emit(selection_);
         for (const auto& w : waiting_) emit(w);
         waiting_.clear();
         emit(m);
         state_ = State::Off;
-        return;
+        return {};
       }
       checkSameSettings(m);
       if (!planeMotion(m)) {
         waiting_.push_back(m);
         blockWithoutMotion();
-        return;
+        return {};
       }
       if (sideOf(m.trc) != side()) settings_ = m.trc;  // the side of the first element counts
       const double r = std::fabs(settings_.radius);
@@ -291,7 +279,8 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       const Vec2 n1 = first.side * geom::leftNormal(first.programmed.startTangent());
       if (selection_.trc.approach == Approach::Kont &&
           geom::dot(approach.programmed.p0 - p1, n1) < -kEps) {
-        approach.strategy = 460;  // the point behind the contour: G461/G462 have no effect (Q7)
+        approach.strategy =
+            TrcStrategy::G460;  // the point behind the contour: G461/G462 have no effect (Q7)
         kontApproach(approach, first);
       } else if (geom::length(approach.compensated.p1 - approach.compensated.p0) > kEps) {
         // NORM: one straight line to the normal point of the first element (details Q1); if it
@@ -315,12 +304,12 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       window_.pushBack() = std::move(first);
       dummy_blocks_ = 0;
       state_ = State::On;
-      return;
+      return {};
     }
     case State::On: {
-      if (m.trc.mode == 40) {
+      if (m.trc.mode == TrcMode::Off) {
         retract(m);
-        return;
+        return {};
       }
       checkSameSettings(m);
       if (!planeMotion(m)) {
@@ -330,7 +319,7 @@ void RadiusCompensation::motion(const MotionBlock& m) {
           window_.back().waiting.push_back(m);
         settings_.max_dummy_blocks = m.trc.max_dummy_blocks;
         blockWithoutMotion();
-        return;
+        return {};
       }
       Piece& next = window_.pushBack();
       compensateNext(next, m);
@@ -345,9 +334,10 @@ void RadiusCompensation::motion(const MotionBlock& m) {
       if (open) checkOpen(count_ + 1);
       release();
       dummy_blocks_ = 0;
-      return;
+      return {};
     }
   }
+  return {};
 }
 
 void RadiusCompensation::connect(Piece& cur, Piece& next) {
@@ -413,7 +403,7 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   // Outside corner (details Q3/Q4): G450 circle unless flatter than MD20230; G451 intersection
   // unless the contour angle reaches MD20210.
   const double angle = reversal ? 180.0 : std::acos(std::fmax(-1.0, std::fmin(1.0, d))) * kDeg;
-  const TrcSettings& t = next.block.trc;
+  const core::TrcSettings& t = next.block.trc;
   bool circle = t.corner == CornerMode::TransitionCircle ? !(angle < t.curve_insert_limit)
                                                          : angle >= t.corner_limit;
   if (!circle) {
@@ -523,9 +513,10 @@ void RadiusCompensation::bridge(Piece& next, bool needed) {
     // only to find an intersection (W1 2.4.10, details Q7).
     std::optional<geom::Crossing> best;
     if (c.box.overlaps(later_box)) best = bridgeCrossing(c, c.compensated, false, later, next.side);
-    if (!best && c.approach && (c.strategy == 461 || c.strategy == 462)) {
+    if (!best && c.approach &&
+        (c.strategy == TrcStrategy::G461 || c.strategy == TrcStrategy::G462)) {
       Element extension;
-      if (c.strategy == 461) {
+      if (c.strategy == TrcStrategy::G461) {
         extension = fullCircle(c.programmed.p1, std::fabs(next.r0));
       } else {
         // G462: the first element's equidistant extended backwards from the approach point
@@ -606,12 +597,13 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     kontRetraction(m);
     return;
   }
-  if (last.open_before && !last.emitted && (m.trc.strategy == 461 || m.trc.strategy == 462)) {
+  if (last.open_before && !last.emitted &&
+      (m.trc.strategy == TrcStrategy::G461 || m.trc.strategy == TrcStrategy::G462)) {
     // G461/G462: the last element, which meets no earlier one, is extended by a circle about
     // its programmed end point (radius R) or along its end tangent; the intersection with an
     // earlier element ends that element and starts the retraction (W1 2.4.10, details Q7).
     Element ext;
-    if (m.trc.strategy == 461) {
+    if (m.trc.strategy == TrcStrategy::G461) {
       ext = fullCircle(pe, std::fabs(last.r1));
     } else {
       ext.p0 = last.raw.p1;
@@ -774,7 +766,7 @@ void RadiusCompensation::preprocessorStop(bool alarm) {
   restart_next_ = true;
 }
 
-void RadiusCompensation::finish() {
+void RadiusCompensation::flush() {
   if (state_ == State::Selecting) {
     // No contour element follows the selection block: it ends on its own normal.
     const double r = std::fabs(settings_.radius);

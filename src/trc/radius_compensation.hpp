@@ -13,27 +13,32 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
+#include "core/stage.hpp"
 #include "geom/contour.hpp"
-#include "place/placement.hpp"
 #include "trc/piece_window.hpp"
 
 namespace ncoffset::trc {
 
-class RadiusCompensation {
+class RadiusCompensation final : public core::Stage {
  public:
-  explicit RadiusCompensation(place::Placement& out) : out_(out) {}
+  explicit RadiusCompensation(core::Stage& out) : out_(out) {}
   // Every motion block, in program order.
-  void motion(const place::MotionBlock& m);
+  core::Feedback motion(const core::MotionBlock& m) override;
+  void programmed(const core::MotionBlock& m) override { out_.programmed(m); }
+  void warning(const core::MotionBlock& at, int number, const std::string& text) override {
+    out_.warning(at, number, text);
+  }
   // A block without any motion while compensation is active (counts against MD20250).
-  void blockWithoutMotion();
+  void blockWithoutMotion() override;
   // End of program: the last element ends on its normal at the end point.
-  void finish();
+  void flush() override;
   // A preprocessor stop (STOPRE) while active (W1 2.4.11): the last element ends on its normal
   // at its end point, the next block approaches the normal point at its start; with SD42480
   // STOP_CUTCOM_STOPRE = 1 alarm 10778 instead.
-  void preprocessorStop(bool alarm);
+  void preprocessorStop(bool alarm) override;
   bool active() const { return state_ != State::Off; }
 
  private:
@@ -42,7 +47,7 @@ class RadiusCompensation {
   // One element of the window: a traversing block, or the approach line of the selection
   // block (index 0).
   struct Piece {
-    place::MotionBlock block;
+    core::MotionBlock block;
     geom::Element programmed;
     geom::Element compensated;  // start and end as far as they are known
     geom::Element raw;          // the whole equidistant (before corners trimmed it)
@@ -55,35 +60,35 @@ class RadiusCompensation {
     bool approach = false;      // the selection block's approach line
     bool restart = false;       // starts anew: side change (G41 <-> G42, sign of R), STOPRE
     bool emitted = false;       // already written (kept only to join the next element to)
-    int strategy = 460;         // approach line: G460/G461/G462
-    geom::Vec2 first_tangent;   // approach line: the first element's start tangent (G462)
-    std::vector<place::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
-    std::vector<place::MotionBlock> waiting;     // blocks without plane motion after it
+    core::TrcStrategy strategy = core::TrcStrategy::G460;  // approach line
+    geom::Vec2 first_tangent;  // approach line: the first element's start tangent (G462)
+    std::vector<core::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
+    std::vector<core::MotionBlock> waiting;     // blocks without plane motion after it
   };
 
-  geom::Element toElement(const place::MotionBlock& m) const;
-  place::MotionBlock toBlock(const place::MotionBlock& like, const geom::Element& e) const;
+  geom::Element toElement(const core::MotionBlock& m) const;
+  core::MotionBlock toBlock(const core::MotionBlock& like, const geom::Element& e) const;
   // The geometry of element `e` as a motion of block `like` (lines stay G0/G1).
-  place::Placement::Geometry geometry(const place::MotionBlock& like, const geom::Element& e) const;
+  core::Geometry geometry(const core::MotionBlock& like, const geom::Element& e) const;
   // A block of `like` that keeps its applicate motion but stands at plane point `at`.
-  place::MotionBlock atPoint(const place::MotionBlock& like, geom::Vec2 at) const;
-  void emit(const place::MotionBlock& m) { out_.motion(m); }
+  core::MotionBlock atPoint(const core::MotionBlock& like, geom::Vec2 at) const;
+  void emit(const core::MotionBlock& m) { out_.motion(m); }
   void emitPiece(const Piece& p);
-  Piece compensate(const place::MotionBlock& m, double r0, double r1) const;
-  void compensateInto(Piece& p, const place::MotionBlock& m, double r0, double r1) const;
+  Piece compensate(const core::MotionBlock& m, double r0, double r1) const;
+  void compensateInto(Piece& p, const core::MotionBlock& m, double r0, double r1) const;
   // The equidistant at the constant value the corner calculation uses (details Q8: the end
   // value of the first element, the start value of the second).
   geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
   // The next element with its compensation value (a change spreads over the block, Q8) and
   // side (a change of side starts anew at the block's start, like a selection).
-  void compensateNext(Piece& p, const place::MotionBlock& m);
+  void compensateNext(Piece& p, const core::MotionBlock& m);
   // Joins `next` to the last element of the window (corner).
   void connect(Piece& cur, Piece& next);
   // The transition about corner point p from a (tangent ta) to b (tangent tb): the circle of
   // radius R, or with DISC > 0 the DISC curve as chords; the applicate runs from app0 to app1.
-  void transition(std::vector<place::MotionBlock>& out, const place::MotionBlock& like,
-                  geom::Vec2 a, geom::Vec2 ta, geom::Vec2 b, geom::Vec2 tb, geom::Vec2 p, double s,
-                  double disc, double app0, double app1) const;
+  void transition(std::vector<core::MotionBlock>& out, const core::MotionBlock& like, geom::Vec2 a,
+                  geom::Vec2 ta, geom::Vec2 b, geom::Vec2 tb, geom::Vec2 p, double s, double disc,
+                  double app0, double app1) const;
   // A junction of the window without intersection, or an element without equidistant.
   bool anyOpen() const;
   // Bottleneck detection: intersects `next` with earlier elements of the window; `needed`:
@@ -102,29 +107,28 @@ class RadiusCompensation {
   // Writes the elements no later block can change.
   void release();
   void flushAll();
-  void startWindow(Piece approach, Piece first);
   void kontApproach(Piece& approach, Piece& first);
-  void kontRetraction(const place::MotionBlock& m);
-  void retract(const place::MotionBlock& m);
-  void checkSameSettings(const place::MotionBlock& m) const;
-  bool planeMotion(const place::MotionBlock& m) const;
+  void kontRetraction(const core::MotionBlock& m);
+  void retract(const core::MotionBlock& m);
+  void checkSameSettings(const core::MotionBlock& m) const;
+  bool planeMotion(const core::MotionBlock& m) const;
   // +1: compensated to the left of travel. G41: left of the direction of travel; a negative
   // compensation value changes the side (PM-NC p256).
-  static double sideOf(const TrcSettings& t) {
-    const double s = t.mode == 41 ? 1.0 : -1.0;
+  static double sideOf(const core::TrcSettings& t) {
+    const double s = t.mode == core::TrcMode::Left ? 1.0 : -1.0;
     return t.radius < 0 ? -s : s;
   }
   double side() const { return sideOf(settings_); }
 
-  place::Placement& out_;
+  core::Stage& out_;
   State state_ = State::Off;
-  place::MotionBlock selection_;             // the G41/G42 block waiting for the first element
-  std::vector<place::MotionBlock> waiting_;  // blocks without plane motion after the selection
+  core::MotionBlock selection_;             // the G41/G42 block waiting for the first element
+  std::vector<core::MotionBlock> waiting_;  // blocks without plane motion after the selection
   PieceWindow<Piece> window_;
   long count_ = 0;             // traversing blocks since the selection
   bool restart_next_ = false;  // after STOPRE: the next element starts anew
   int dummy_blocks_ = 0;
-  TrcSettings settings_;  // of the last block
+  core::TrcSettings settings_;  // of the last block
 };
 
 }  // namespace ncoffset::trc

@@ -3,13 +3,19 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::trc {
 
+using core::MotionBlock;
+using core::SarInfeed;
+using core::SarRequest;
+using core::SarSide;
+using core::TrcMode;
+using core::TrcSettings;
 using geom::Vec2;
-using place::MotionBlock;
 
 namespace {
 
@@ -43,8 +49,8 @@ Vec2 tangent(const MotionBlock& m, bool at_end) {
 
 // +1: compensation left of the travel, -1: right, 0: off (spec §5.1, a negative value flips).
 double trcSide(const TrcSettings& t) {
-  if (t.mode == 40 || std::fabs(t.radius) < 1e-12) return 0;
-  double s = t.mode == 41 ? 1.0 : -1.0;
+  if (t.mode == TrcMode::Off || std::fabs(t.radius) < 1e-12) return 0;
+  double s = t.mode == TrcMode::Left ? 1.0 : -1.0;
   return t.radius < 0 ? -s : s;
 }
 
@@ -61,8 +67,8 @@ struct Shape {
 
 Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, Vec2 ref,
                 bool approach) {
-  const SarRequest& q = *s.sar;
-  const int kind = q.type / 100;  // 1 line, 2 quadrant, 3 semicircle
+  const SarRequest& q = s.sar;
+  const int kind = core::sarShape(q.kind);  // 1 line, 2 quadrant, 3 semicircle
   const double side = trcSide(trc), radius = side != 0 ? std::fabs(trc.radius) : 0.0;
   const Vec2 n = geom::leftNormal(t);
   Shape out;
@@ -86,11 +92,11 @@ Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, V
   // Side of the circle: G141 left, G142 right, G140 the compensation side (G143 without
   // compensation), G143 the side of the start / end point relative to the tangent at P4.
   double sigma = 0;
-  if (q.side == 141)
+  if (q.side == SarSide::G141)
     sigma = 1;
-  else if (q.side == 142)
+  else if (q.side == SarSide::G142)
     sigma = -1;
-  else if (q.side == 140 && side != 0)
+  else if (q.side == SarSide::G140 && side != 0)
     sigma = side;
   else
     sigma = geom::cross(t, ref - p4) >= 0 ? 1 : -1;
@@ -140,7 +146,7 @@ void checkMonotonic(std::initializer_list<double> apps, int line) {
 MotionBlock subBlock(const MotionBlock& like, const Vec3& from, const Vec3& to, Motion mo,
                      double feed) {
   MotionBlock b = like;
-  b.sar = nullptr;
+  b.sar.kind = core::SarKind::None;
   b.start = from;
   b.end = to;
   b.motion = mo;
@@ -178,21 +184,28 @@ void SmoothApproach::pass(const MotionBlock& m) {
   out_.motion(m);
 }
 
-void SmoothApproach::motion(const MotionBlock& m) {
+core::Feedback SmoothApproach::motion(const MotionBlock& m) {
+  take(m);
+  if (!has_feedback_) return {};
+  has_feedback_ = false;
+  return std::exchange(feedback_, {});
+}
+
+void SmoothApproach::take(const MotionBlock& m) {
   switch (state_) {
     case State::Idle:
-      if (m.sar && m.sar->approach()) {
-        request_ = *m.sar;  // kept: the interpreter's request belongs to the current block
+      if (m.sar.approach()) {
         sar_ = m;
-        sar_.sar = &request_;
         p4_.reset();
         held_.clear();
         held_dummies_ = 0;
-        apdv_ = false;  // $P_APR/$P_AEP still belong to an older approach
-        state_ = request_.plane_axis ? State::WaitTangent : State::WaitP4;
+        points_.valid = false;  // $P_APR/$P_AEP still belong to an older approach
+        feedback_.approach = points_;
+        has_feedback_ = true;
+        state_ = sar_.sar.plane_axis ? State::WaitTangent : State::WaitP4;
         return;
       }
-      if (m.sar && m.sar->retraction()) {
+      if (m.sar.retraction()) {
         retraction(m);
         return;
       }
@@ -200,7 +213,7 @@ void SmoothApproach::motion(const MotionBlock& m) {
       return;
     case State::WaitP4:
     case State::WaitTangent:
-      if (m.sar)
+      if (m.sar.kind != core::SarKind::None)
         sarAlarm(10743, "SAR programmed several times: the previous approach is not complete",
                  m.line);
       if (state_ == State::WaitP4) {
@@ -210,11 +223,11 @@ void SmoothApproach::motion(const MotionBlock& m) {
         return;
       }
       if (!hasPlaneMotion(m)) {  // no tangent yet: an infeed; counts against MD20202 too
-        if (static_cast<int>(held_.size()) + held_dummies_ >= max_dummy_blocks_)
+        if (static_cast<int>(held_.size()) + held_dummies_ >= sar_.sar.max_dummy_blocks)
           sarAlarm(10740,
                    fmt::format("SAR: too many blocks without plane motion between the SAR block "
                                "and the block that defines the approach direction (MD20202 = {})",
-                               max_dummy_blocks_),
+                               sar_.sar.max_dummy_blocks),
                    m.line);
         held_.push_back(m);
         return;
@@ -231,29 +244,30 @@ void SmoothApproach::blockWithoutMotion() {
     out_.blockWithoutMotion();
     return;
   }
-  if (++held_dummies_ + static_cast<int>(held_.size()) > max_dummy_blocks_)
+  if (++held_dummies_ + static_cast<int>(held_.size()) > sar_.sar.max_dummy_blocks)
     raise(10740, fmt::format("SAR: too many blocks without traversing motion between the SAR block "
                              "and the block that defines the approach direction (MD20202 = {})",
-                             max_dummy_blocks_));
+                             sar_.sar.max_dummy_blocks));
 }
 
-void SmoothApproach::preprocessorStop() {
+void SmoothApproach::preprocessorStop(bool alarm) {
   if (state_ != State::Idle)
     raise(10746,
           "SAR: preprocessor stop between the SAR block and the block that defines the "
           "approach direction");
+  out_.preprocessorStop(alarm);
 }
 
-void SmoothApproach::finish() {
+void SmoothApproach::flush() {
   if (state_ != State::Idle)
     sarAlarm(10744, "SAR: no valid approach direction: no traversing block follows the SAR block",
              (p4_ ? *p4_ : sar_).line);
-  out_.finish();
+  out_.flush();
 }
 
 void SmoothApproach::approach(const MotionBlock& tangent_block) {
   const MotionBlock& s = sar_;
-  const SarRequest& q = *s.sar;
+  const SarRequest& q = s.sar;
   const MotionBlock& p4b = p4_ ? *p4_ : s;
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
@@ -265,30 +279,30 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
   const double app4 = p4[app];
   const double app2 = q.discl_ac ? q.discl : app4 + (q.has_discl ? q.discl : 0.0);
   const double app1 = q.has_disrp ? (q.disrp_ac ? q.disrp : app4 + q.disrp) : p0[app];
-  const double app3 = q.space == 340 ? app2 : app4;
+  const double app3 = q.infeed == SarInfeed::G340 ? app2 : app4;
   checkMonotonic({p0[app], app1, app2, app3, app4}, s.line);
   const Vec3 p1 = point(s, shape.p3, app1), p2 = point(s, shape.p3, app2),
              p3 = point(s, shape.p3, app3);
-  apr_ = p3;
-  aep_ = p4;
-  apdv_ = true;
+  points_ = {p3, p4, true};
+  feedback_.approach = points_;
+  has_feedback_ = true;
 
   // Velocities (PM-NC p280, readings V1-V3): P0 -> P2 with the motion and feed of the block
   // before; the slow infeed (G341) with FAD; the contour with FAD (G340) or the block's F.
   const double sar_f = q.f_programmed ? q.feed_value : q.feed_before;
-  const Motion fast = q.motion_before == 0 ? Motion::G0 : Motion::G1;
+  const Motion fast = q.rapid_before ? Motion::G0 : Motion::G1;
   const auto sub = subBlock;
   auto emit = [&](const MotionBlock& b) {
     if (norm(b.end - b.start) > 1e-12) pass(b);
   };
   emit(sub(s, p0, p1, fast, q.feed_before));
-  if (q.space == 340) {
+  if (q.infeed == SarInfeed::G340) {
     emit(sub(s, p1, p3, fast, q.feed_before));
   } else {
     emit(sub(s, p1, p2, fast, q.feed_before));
     emit(sub(s, p2, p3, Motion::G1, q.has_fad ? q.fad : sar_f));
   }
-  const double contour_f = q.space == 340 && q.has_fad               ? q.fad
+  const double contour_f = q.infeed == SarInfeed::G340 && q.has_fad  ? q.fad
                            : p4_ && p4_->has_feed && !q.f_programmed ? p4_->feed
                                                                      : sar_f;
   const MotionBlock curve = curveBlock(p4b, p3, p4, shape, contour_f);
@@ -300,7 +314,7 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
 }
 
 void SmoothApproach::retraction(const MotionBlock& s) {
-  const SarRequest& q = *s.sar;
+  const SarRequest& q = s.sar;
   if (!last_)
     sarAlarm(10744, "SAR: no valid retraction direction: no contour block before the SAR block",
              s.line);
@@ -315,11 +329,12 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   last.centre = last_->centre;
   const Vec2 t = tangent(last, true);
   TrcSettings active = s.trc;  // with G40 in the block: the side active before it
-  if (s.trc.mode == 40) {
+  if (s.trc.mode == TrcMode::Off) {
     active.mode = last_trc_mode_;
     active.radius = last_trc_radius_;
   }
-  if (!q.plane_axis && (q.side == 143 || (q.side == 140 && trcSide(active) == 0)))
+  if (!q.plane_axis &&
+      (q.side == SarSide::G143 || (q.side == SarSide::G140 && trcSide(active) == 0)))
     sarAlarm(10747,
              "SAR: retraction direction not defined: G143 needs the end point in the SAR block",
              s.line);
@@ -327,7 +342,7 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   const Shape shape = construct(s, active, inPlane(s, p4), t, inPlane(s, p0), false);
   const double app4 = p4[app];
   const double app2 = q.discl_ac ? q.discl : app4 + (q.has_discl ? q.discl : 0.0);
-  const double app3 = q.space == 340 ? app2 : app4;
+  const double app3 = q.infeed == SarInfeed::G340 ? app2 : app4;
   // The end point: from the SAR block; without any geometry axis the retraction ends in P2,
   // with only the perpendicular axis in P1 (details §4.3, PM-F 10.2004 8-50).
   if (!q.any_axis)
@@ -338,7 +353,10 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   checkMonotonic({app4, app3, app2, app1, p0[app]}, s.line);
   const Vec3 p1 = point(s, shape.p3, app1), p2 = point(s, shape.p3, app2),
              p3 = point(s, shape.p3, app3);
-  if (!q.plane_axis) end_override_ = p0;
+  if (!q.plane_axis) {
+    feedback_.end_point = p0;
+    has_feedback_ = true;
+  }
 
   // Velocities reversed (PM-NC p280, readings K2/K3): the contour with the old feed (FAD with
   // G340), the slow lift with FAD, from P2 on the block's own motion and feed.
@@ -351,8 +369,8 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   auto sub = [&](const Vec3& from, const Vec3& to, Motion mo, double feed) {
     keep(subBlock(s, from, to, mo, feed));
   };
-  keep(curveBlock(s, p4, p3, shape, q.space == 340 && q.has_fad ? q.fad : old_f));
-  if (q.space == 341) {
+  keep(curveBlock(s, p4, p3, shape, q.infeed == SarInfeed::G340 && q.has_fad ? q.fad : old_f));
+  if (q.infeed == SarInfeed::G341) {
     sub(p3, p2, Motion::G1, q.has_fad ? q.fad : old_f);
     sub(p2, p1, own, q.feed_value);
   } else {

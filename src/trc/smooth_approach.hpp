@@ -11,55 +11,41 @@
 #include <optional>
 #include <vector>
 
+#include "core/stage.hpp"
 #include "geom/contour.hpp"
-#include "place/placement.hpp"
-#include "trc/radius_compensation.hpp"
 
 namespace ncoffset::trc {
 
-class SmoothApproach {
+class SmoothApproach final : public core::Stage {
  public:
-  explicit SmoothApproach(RadiusCompensation& out) : out_(out) {}
-  SmoothApproach(const SmoothApproach&) = delete;  // sar_.sar points into the object
-  SmoothApproach& operator=(const SmoothApproach&) = delete;
-  void motion(const place::MotionBlock& m);
+  explicit SmoothApproach(core::Stage& out) : out_(out) {}
+  // Returns the approach points when an approach began or was evaluated with this block, and
+  // the tool's position after a retraction block whose end point is implicit.
+  core::Feedback motion(const core::MotionBlock& m) override;
+  void warning(const core::MotionBlock& at, int number, const std::string& text) override {
+    out_.warning(at, number, text);
+  }
   // A block reaching the main run without any motion.
-  void blockWithoutMotion();
+  void blockWithoutMotion() override;
   // STOPRE (explicit preprocessor stop): not allowed between an approach block and the block
   // that defines its tangent.
-  void preprocessorStop();
-  void finish();
-  // Waiting for the blocks that complete an approach, or compensation active.
-  bool active() const { return state_ != State::Idle || out_.active(); }
-  // After a retraction block whose end point is implicit: where the tool is (WCS).
-  std::optional<Vec3> takeEndOverride() {
-    auto e = end_override_;
-    end_override_.reset();
-    return e;
-  }
-  // MD20202 $MC_WAB_MAXNUM_DUMMY_BLOCKS.
-  void setMaxDummyBlocks(int n) { max_dummy_blocks_ = n; }
-
-  // $P_APR, $P_AEP (WCS, of the last evaluated approach), $P_APDV.
-  Vec3 apr() const { return apr_; }
-  Vec3 aep() const { return aep_; }
-  bool apdv() const { return apdv_; }
+  void preprocessorStop(bool alarm) override;
+  void flush() override;
 
  private:
   enum class State { Idle, WaitP4, WaitTangent };
 
-  void approach(const place::MotionBlock& tangent_block);
-  void retraction(const place::MotionBlock& m);
-  void pass(const place::MotionBlock& m);
+  void approach(const core::MotionBlock& tangent_block);
+  void retraction(const core::MotionBlock& m);
+  void take(const core::MotionBlock& m);
+  void pass(const core::MotionBlock& m);
 
-  RadiusCompensation& out_;
+  core::Stage& out_;
   State state_ = State::Idle;
-  place::MotionBlock sar_;                // the approach block
-  SarRequest request_;                    // its request (sar_.sar points here)
-  std::optional<place::MotionBlock> p4_;  // the block that supplies P4 (if not sar_)
-  std::vector<place::MotionBlock> held_;  // geometry blocks between P4 and the tangent block
-  int held_dummies_ = 0;                  // blocks without motion in between
-  int max_dummy_blocks_ = 5;
+  core::MotionBlock sar_;                // the approach block
+  std::optional<core::MotionBlock> p4_;  // the block that supplies P4 (if not sar_)
+  std::vector<core::MotionBlock> held_;  // geometry blocks between P4 and the tangent block
+  int held_dummies_ = 0;                 // blocks without motion in between
   // The last block with plane motion that went through (for the retraction's tangent).
   // (Only what the tangent needs: copying whole blocks cost 100 instructions a block.)
   struct LastContour {
@@ -68,11 +54,11 @@ class SmoothApproach {
     Vec3 start, end, centre;
   };
   std::optional<LastContour> last_;
-  int last_trc_mode_ = 40;  // G40/G41/G42 of the last block
+  core::TrcMode last_trc_mode_ = core::TrcMode::Off;  // of the last block
   double last_trc_radius_ = 0;
-  std::optional<Vec3> end_override_;
-  Vec3 apr_, aep_;
-  bool apdv_ = false;
+  core::ApproachPoints points_;  // of the last evaluated approach
+  core::Feedback feedback_;      // for the block being taken
+  bool has_feedback_ = false;
 };
 
 }  // namespace ncoffset::trc

@@ -6,8 +6,12 @@
 
 #include <vector>
 
+#include "ncoffset/frame.hpp"
+
 namespace ncoffset::place {
 namespace {
+
+using core::MotionBlock;
 
 class Collect final : public PathSink {
  public:
@@ -37,8 +41,9 @@ MotionBlock quarterArc(Motion m = Motion::G2) {
   return b;
 }
 
-Affine affineOf(const Frame& f) {
-  return f.affine();
+// The frame as a block carries it (a frame state of its own: applied, not taken for none).
+core::BlockFrame affineOf(const Frame& f) {
+  return core::BlockFrame(f.affine(), 1, false);
 }
 
 Segment place(const MotionBlock& b, CoordSystem cs) {

@@ -1,0 +1,46 @@
+// The block every stage passes on: one motion as the interpreter computed it, with the
+// compensation settings, the frame and the tool length vector valid for it (docs/architecture.md).
+// Blocks are values: a stage that keeps one keeps a copy; nothing in a block points into
+// another stage.
+#pragma once
+
+#include "core/block_frame.hpp"
+#include "core/compensation.hpp"
+#include "ncoffset/geometry.hpp"
+#include "ncoffset/path.hpp"
+
+namespace ncoffset::core {
+
+struct MotionBlock {
+  Motion motion = Motion::G1;
+  Vec3 start;         // WCS
+  Vec3 end;           // WCS
+  Vec3 centre;        // WCS, arcs
+  int applicate = 2;  // arcs: index of the axis perpendicular to the plane (G17: Z)
+  Plane plane = Plane::G17;
+  TrcSettings trc;  // radius compensation of this block
+  int turns = 0;
+  BlockFrame frame;  // WCS -> BCS for this block (none with G53/G153/SUPA and programmed MCS)
+  Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
+  double feed = 0;
+  bool has_feed = false;
+  int line = 0;
+  int file = 0;
+  SarRequest sar;  // smooth approach / retraction of the block (kind None for every other block)
+};
+
+// The geometry of a motion without the rest of its block: what radius compensation makes of a
+// block (an element, a corner circle) travels as this plus a reference to the block it came from,
+// which saves copying a whole block for every compensated element.
+struct Geometry {
+  Motion motion;
+  Vec3 start, end, centre;
+  int applicate;
+  int turns;
+};
+
+inline Geometry geometryOf(const MotionBlock& m) {
+  return {m.motion, m.start, m.end, m.centre, m.applicate, m.turns};
+}
+
+}  // namespace ncoffset::core
