@@ -49,7 +49,7 @@ double Interpreter::toMm(double v) const {
 void Interpreter::collectWord(const Stmt& st) {
   std::string_view name = st.name;
   auto value = [&]() { return st.literal ? st.literal_value : eval_.number(block_, st.expr); };
-  if (st.has_equals && st.mode == AxisMode::Default && findVariable(name)) {
+  if (st.has_equals && st.mode == AxisMode::Default && vars_.find(name)) {
     // A user variable with a one-letter name (DEF REAL V): V=2 is an assignment.
     lang::Node target;
     target.kind = lang::NodeKind::Name;

@@ -8,6 +8,7 @@
 #include <ostream>
 
 #include "ncoffset/alarm.hpp"
+#include "out/vars_json.hpp"
 
 namespace ncoffset::interp {
 
@@ -19,8 +20,12 @@ using lang::TextPos;
 using lang::Value;
 
 Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage& first)
-    : options_(options), first_(first), sink_(sink), eval_(*this), uifr_(100) {
-  r_.assign(static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM")), 0.0);
+    : options_(options),
+      first_(first),
+      sink_(sink),
+      eval_(*this),
+      vars_(options.limits, static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM"))),
+      uifr_(100) {
   md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
   md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
@@ -38,7 +43,6 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
   sd_wear_sign_ = data_.find("$SC_WEAR_SIGN");
   sd_length_const_ = data_.find("$SC_TOOL_LENGTH_CONST");
   sd_length_type_ = data_.find("$SC_TOOL_LENGTH_TYPE");
-  r_written_.assign(r_.size(), false);
   updateActiveFrame();
 }
 
@@ -68,6 +72,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
   ended_ = false;
   levels_.clear();
+  vars_.beginRun();
   ProgramLevel main;
   main.program = &program;
   levels_.push_back(std::move(main));
@@ -105,8 +110,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   }
   if (!init_file) {
     first_.flush();  // the last compensated element ends on its normal
-    main_vars_ = std::move(levels_.front().locals);
   }
+  vars_.endRun(!init_file);
   levels_.clear();
 }
 
@@ -311,7 +316,7 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
   long long block_no = -1;
   if (target.kind == NodeKind::BlockNo) {
     block_no = static_cast<long long>(target.number);
-  } else if (target.kind != NodeKind::Name || findVariable(target.text)) {
+  } else if (target.kind != NodeKind::Name || vars_.find(target.text)) {
     // A STRING variable may hold a block number ("N200" or ":200") instead of a label.
     Value v = eval_.eval(block_, target_node);
     if (v.isText() && v.str.size() > 1 && (v.str[0] == 'N' || v.str[0] == 'n' || v.str[0] == ':') &&
@@ -369,7 +374,7 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
   } else {
     if (target.kind == NodeKind::Name) {
       // A label, or a STRING variable holding one.
-      UserVariable* v = findVariable(target.text);
+      UserVariable* v = vars_.find(target.text);
       label = v && !v->isArray() && v->type == lang::VarType::String ? v->data[0].str
                                                                      : std::string(target.text);
     } else {
@@ -396,16 +401,14 @@ void Interpreter::endProgram() {
 
 void Interpreter::returnFromSubprogram() {
   ProgramLevel& lvl = levels_.back();
-  variable_count_ -= std::min(variable_count_, lvl.locals.size());
-  for (const auto& [name, var] : lvl.locals)
-    element_count_ -= std::min(element_count_, var.data.size());
   if (lvl.repeat_left > 0) {
     --lvl.repeat_left;
-    lvl.locals.clear();
+    vars_.clearScope();
     lvl.pos = TextPos{};
     lvl.defs_allowed = true;
     return;
   }
+  vars_.popScope();
   levels_.pop_back();
 }
 
@@ -457,48 +460,15 @@ void Interpreter::callSubprogram(std::string_view name, long long repeat) {
   lvl.program = prog;
   lvl.repeat_left = repeat - 1;
   levels_.push_back(std::move(lvl));
+  vars_.pushScope();
 }
 
 // --- variables ------------------------------------------------------------------------------
 
-UserVariable* Interpreter::findVariable(std::string_view name) {
-  auto& loc = levels_.empty() ? main_vars_ : levels_.back().locals;
-  if (loc.empty() && globals_.empty()) return nullptr;  // the common case: no hashing
-  if (auto it = loc.find(name); it != loc.end()) return &it->second;
-  if (auto it = globals_.find(name); it != globals_.end()) return &it->second;
-  return nullptr;
-}
-
 void Interpreter::define(const lang::Decl& d) {
-  ProgramLevel& lvl = levels_.back();
-  std::string name(d.name);
-  if (lvl.locals.count(name) || globals_.count(name))
-    raise(alarm_no::kAlreadyDefined, fmt::format("name {} defined several times", name));
-  if (name[0] == '$' ||
-      (name.size() >= 2 && name[0] == 'R' &&
-       std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })))
-    raise(alarm_no::kSyntaxError, fmt::format("{} is a reserved name", name));
-  if (variable_count_ >= options_.limits.max_variables)
-    raise(alarm_no::kTooManyVariables, fmt::format("more than {} user variables (--max-variables)",
-                                                   options_.limits.max_variables));
-  UserVariable v;
-  v.type = d.type;
-  v.dims[0] = d.dims[0];
-  v.dims[1] = d.dims[1];
-  v.string_length = d.string_length;
-  size_t count = 1;
-  if (d.dims[0] > 0) {
-    count = static_cast<size_t>(d.dims[0]) * static_cast<size_t>(d.dims[1] > 0 ? d.dims[1] : 1);
-    if (count > options_.limits.max_array_elements ||
-        element_count_ + count > options_.limits.max_total_elements)
-      raise(
-          alarm_no::kArrayTooLarge,
-          fmt::format("array {} has {} elements: more than {} in one array (--max-array-elements) "
-                      "or {} in all (--max-total-elements)",
-                      name, count, options_.limits.max_array_elements,
-                      options_.limits.max_total_elements));
-  }
-  v.data.assign(count, initialValue(d.type));
+  std::string_view name = d.name;
+  UserVariable v = vars_.prepare(d);
+  const size_t count = v.data.size();
   if (d.init >= 0) {
     v.data[0] = convertForStore(eval_.eval(block_, d.init), d.type, d.string_length, name);
   } else if (d.init_first >= 0) {
@@ -518,39 +488,18 @@ void Interpreter::define(const lang::Decl& d) {
                             d.type, d.string_length, name);
     }
   }
-  element_count_ += count;
-  lvl.locals.emplace(std::move(name), std::move(v));
-  ++variable_count_;
-}
-
-size_t Interpreter::elementIndex(const UserVariable& var, std::span<const Value> idx,
-                                 std::string_view name) const {
-  int dims = var.dims[1] > 0 ? 2 : 1;
-  if (static_cast<int>(idx.size()) != dims)
-    raise(alarm_no::kArrayIndex1,
-          fmt::format("illegal array index: {} has {} dimension(s), {} index(es) given", name, dims,
-                      idx.size()));
-  size_t flat = 0;
-  for (int k = 0; k < dims; ++k) {
-    double x = lang::toNumber(idx[static_cast<size_t>(k)], "array index");
-    if (x != std::floor(x) || x < 0 || x >= var.dims[k])
-      raise(k == 0 ? alarm_no::kArrayIndex1 : alarm_no::kArrayIndex2,
-            fmt::format("illegal array index {}: {}[{}] with {} outside 0..{}", k + 1, name,
-                        k == 0 ? "i" : "..,j", x, var.dims[k] - 1));
-    flat = flat * static_cast<size_t>(k == 0 ? 1 : var.dims[1]) + static_cast<size_t>(x);
-  }
-  return flat;
+  vars_.add(name, std::move(v));
 }
 
 bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool indexed,
                        Value& out) {
-  if (UserVariable* v = findVariable(name)) {
+  if (UserVariable* v = vars_.find(name)) {
     if (v->isArray()) {
       if (!indexed) {
         out = {lang::Type::ArrayRef, 0, std::string(name), {}};  // whole array: call argument
         return true;
       }
-      out = v->data[elementIndex(*v, idx, name)];
+      out = v->data[VariableStore::elementIndex(*v, idx, name)];
     } else {
       if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", name));
       out = v->data[0];
@@ -566,15 +515,12 @@ bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool i
 }
 
 Value Interpreter::readR(double number) {
-  if (number < 0 || number >= static_cast<double>(r_.size()) || number != std::floor(number))
-    raise(alarm_no::kArrayIndex1,
-          fmt::format("illegal array index: R{} (R0..R{} per MD28050)", number, r_.size() - 1));
-  return Value::real(r_[static_cast<size_t>(number)]);
+  return Value::real(vars_.r(number));
 }
 
 void Interpreter::assign(const Stmt& st) {
   const Node& target = block_.node(st.target);
-  if (target.kind == NodeKind::Index && target.text == "AX" && !findVariable("AX")) {
+  if (target.kind == NodeKind::Index && target.text == "AX" && !vars_.find("AX")) {
     // Indirect axis programming AX[axis]=value (PM-JP "Indirect programming").
     if (target.b != 1) raise(alarm_no::kArrayIndex1, "AX[..] takes one axis");
     Stmt word = st;
@@ -607,24 +553,23 @@ void Interpreter::store(const Node& target, const Value& v) {
     double n = target.kind == NodeKind::RParam
                    ? target.number
                    : lang::roundToInt(eval_.number(block_, block_.arg(target, 0)));
-    readR(n);  // range check
+    vars_.r(n);  // range check before the type check
     if (!v.isNumeric())
       raise(alarm_no::kTypeMismatch,
             fmt::format("operation not compatible with data type: R{} takes a number, not {}", n,
                         lang::typeName(v.type)));
-    r_[static_cast<size_t>(n)] = v.num;
-    r_written_[static_cast<size_t>(n)] = true;
+    vars_.setR(n, v.num);
     return;
   }
   std::vector<Value> idx;
   bool indexed = target.kind == NodeKind::Index;
   if (indexed) eval_.evalArgs(block_, target, idx);
-  if (UserVariable* var = findVariable(target.text)) {
+  if (UserVariable* var = vars_.find(target.text)) {
     size_t at = 0;
     if (var->isArray()) {
       if (!indexed)
         raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", target.text));
-      at = elementIndex(*var, idx, target.text);
+      at = VariableStore::elementIndex(*var, idx, target.text);
     } else if (indexed) {
       raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", target.text));
     }
@@ -636,77 +581,10 @@ void Interpreter::store(const Node& target, const Value& v) {
 
 // --- --vars ---------------------------------------------------------------------------------
 
-namespace {
-void jsonValue(std::ostream& out, const Value& v) {
-  switch (v.type) {
-    case lang::Type::Bool:
-      out << (v.num != 0 ? "true" : "false");
-      break;
-    case lang::Type::Int:
-    case lang::Type::Char:
-      out << fmt::format("{}", static_cast<long long>(v.num));
-      break;
-    case lang::Type::Real:
-      out << fmt::format("{}", v.num);
-      break;
-    case lang::Type::Frame: {
-      const Frame& f = *v.frame;
-      auto vec = [](Vec3 p) { return fmt::format("[{},{},{}]", p.x, p.y, p.z); };
-      out << "{\"trans\":" << vec(f.coarse) << ",\"fine\":" << vec(f.fine)
-          << ",\"rot\":" << vec(f.rotation) << ",\"scale\":" << vec(f.scale)
-          << fmt::format(",\"mirror\":[{},{},{}]}}", f.mirror[0], f.mirror[1], f.mirror[2]);
-      break;
-    }
-    default: {
-      out << '"';
-      for (char c : v.str) {
-        auto u = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\')
-          out << '\\' << c;
-        else if (u < 0x20 || u >= 0x7f)
-          out << fmt::format("\\u{:04x}", u);
-        else
-          out << c;
-      }
-      out << '"';
-    }
-  }
-}
-
-void jsonVariable(std::ostream& out, const UserVariable& v) {
-  if (!v.isArray()) {
-    jsonValue(out, v.data[0]);
-    return;
-  }
-  size_t rows = static_cast<size_t>(v.dims[0]);
-  size_t cols = static_cast<size_t>(v.dims[1]);
-  out << '[';
-  for (size_t i = 0; i < rows; ++i) {
-    if (i) out << ',';
-    if (cols == 0) {
-      jsonValue(out, v.data[i]);
-      continue;
-    }
-    out << '[';
-    for (size_t j = 0; j < cols; ++j) {
-      if (j) out << ',';
-      jsonValue(out, v.data[i * cols + j]);
-    }
-    out << ']';
-  }
-  out << ']';
-}
-}  // namespace
-
 void Interpreter::writeVariablesJson(std::ostream& out) const {
-  out << "{\"R\": {";
-  bool first = true;
-  for (size_t i = 0; i < r_.size(); ++i) {
-    if (!r_written_[i]) continue;
-    out << (first ? "" : ", ") << '"' << i << "\": " << fmt::format("{}", r_[i]);
-    first = false;
-  }
-  out << '}';
+  out::VariablesReport report;
+  for (size_t i = 0; i < vars_.rCount(); ++i)
+    if (vars_.rWritten(i)) report.r.emplace_back(i, vars_.rValue(i));
   // The active tool as the $P_TOOL.. system variables show it (docs/tool-offsets.md).
   EffectiveLengths l =
       edge_.valid ? effectiveLengths(edge_.data, edge_.settings) : EffectiveLengths{};
@@ -715,26 +593,12 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
     o = toolOrientation(edge_.data, edge_.settings, modal_.plane, edge_.mirrored);
   else
     o[planeAxes(modal_.plane).applicate] = 1;
-  Vec3 len = toolOffset();
-  out << fmt::format(
-      ", \"$P_TOOLNO\": {}, \"$P_TOOL\": {}, \"$P_TOOLL\": [{},{},{}], \"$P_TOOLR\": {}, "
-      "\"$P_TOOLO\": [{},{},{}], \"$TOOL_LENGTH_BCS\": [{},{},{}]",
-      active_tool_, active_edge_, l.total[0], l.total[1], l.total[2], l.radius, o.x + 0.0,
-      o.y + 0.0, o.z + 0.0, len.x + 0.0, len.y + 0.0, len.z + 0.0);
-  // Smooth approach: P3 and P4 of the last evaluated approach (WCS), $P_APDV.
-  const Vec3 apr = approach_points_.apr, aep = approach_points_.aep;
-  out << fmt::format(", \"$P_APR\": [{},{},{}], \"$P_AEP\": [{},{},{}], \"$P_APDV\": {}",
-                     apr.x + 0.0, apr.y + 0.0, apr.z + 0.0, aep.x + 0.0, aep.y + 0.0, aep.z + 0.0,
-                     approach_points_.valid ? 1 : 0);
-  std::map<std::string, const UserVariable*> sorted;
-  for (const auto& [k, v] : globals_) sorted[k] = &v;
-  const VariableMap& main = levels_.empty() ? main_vars_ : levels_.front().locals;
-  for (const auto& [k, v] : main) sorted[k] = &v;
-  for (const auto& [k, v] : sorted) {
-    out << ", \"" << k << "\": ";
-    jsonVariable(out, *v);
-  }
-  out << "}\n";
+  report.tool = {active_tool_, active_edge_, {l.total[0], l.total[1], l.total[2]}, l.radius, o,
+                 toolOffset()};
+  report.approach = approach_points_;
+  for (const auto& [k, v] : vars_.globals()) report.variables[k] = &v;
+  for (const auto& [k, v] : vars_.mainVariables()) report.variables[k] = &v;
+  out::writeVariablesJson(out, report);
 }
 
 }  // namespace ncoffset::interp

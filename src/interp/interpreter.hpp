@@ -13,6 +13,7 @@
 #include "core/stage.hpp"
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
+#include "interp/variable_store.hpp"
 #include "interp/variables.hpp"
 #include "lang/block.hpp"
 #include "lang/evaluator.hpp"
@@ -37,7 +38,6 @@ struct LoadedProgram {
 struct ProgramLevel {
   LoadedProgram* program = nullptr;
   lang::TextPos pos;  // next line to read
-  VariableMap locals;
   long long repeat_left = 0;
   bool defs_allowed = true;
 };
@@ -83,9 +83,6 @@ class Interpreter final : public lang::Environment {
   void define(const lang::Decl& d);
   void assign(const lang::Stmt& st);
   void store(const lang::Node& target, const lang::Value& v);
-  UserVariable* findVariable(std::string_view name);
-  size_t elementIndex(const UserVariable& var, std::span<const lang::Value> idx,
-                      std::string_view name) const;
 
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
@@ -126,6 +123,7 @@ class Interpreter final : public lang::Environment {
   PathSink& sink_;
   lang::Evaluator eval_;
   MachineData data_;
+  VariableStore vars_;  // after data_: MD28050 sizes the R parameters
   ModalState modal_;
   BlockWords words_;
   std::string call_name_;  // storage for an L<number> program name
@@ -137,12 +135,6 @@ class Interpreter final : public lang::Environment {
   bool dir_scanned_ = false;
 
   std::vector<ProgramLevel> levels_;
-  VariableMap globals_;
-  VariableMap main_vars_;  // the main program's variables after it ended (for --vars)
-  size_t variable_count_ = 0;
-  size_t element_count_ = 0;  // array elements of all live variables
-  std::vector<double> r_;
-  std::vector<bool> r_written_;
 
   lang::Block block_;
   lang::TextPos line_pos_;  // start of the executing line

@@ -152,8 +152,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
     data_.set(id, lang::toNumber(v, "machine/setting data"));
     if (data_.spec(id).number == 28050) {  // MD28050 MM_NUM_R_PARAM: number of R parameters
-      r_.resize(static_cast<size_t>(data_.get(id)), 0.0);
-      r_written_.resize(r_.size(), false);
+      vars_.resizeR(static_cast<size_t>(data_.get(id)));
     }
     return;
   }

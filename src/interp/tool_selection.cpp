@@ -268,7 +268,7 @@ Value Interpreter::callLentoax(std::span<const Value> args) {
   auto array = [&](const Value& v, lang::VarType type, int rows, int cols, const char* what) {
     if (v.type != Type::ArrayRef)
       raise(alarm_no::kWrongCallParams, fmt::format("LENTOAX: {} must be an array variable", what));
-    UserVariable* var = findVariable(v.str);
+    UserVariable* var = vars_.find(v.str);
     if (!var || var->type != type || var->dims[0] != rows || var->dims[1] != cols)
       raise(alarm_no::kWrongCallParams,
             fmt::format("LENTOAX: {} must be DEF {} {}[{}]", what,

@@ -1,0 +1,38 @@
+// The `--vars` file (design.md): the R parameters that were written, the active tool as its
+// system variables show it, the last smooth approach's points, and every user variable of the
+// main program (and the global ones) by name, as one JSON object.
+#pragma once
+
+#include <cstddef>
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/stage.hpp"
+#include "interp/variables.hpp"
+#include "ncoffset/geometry.hpp"
+
+namespace ncoffset::out {
+
+// $P_TOOLNO, $P_TOOL, $P_TOOLL, $P_TOOLR, $P_TOOLO and $TOOL_LENGTH_BCS.
+struct ToolReadout {
+  int tool = 0;
+  int edge = 0;
+  Vec3 lengths;  // L1, L2, L3 with wear
+  double radius = 0;
+  Vec3 orientation;  // unit vector along the tool
+  Vec3 length_bcs;   // the length vector in the BCS
+};
+
+struct VariablesReport {
+  std::vector<std::pair<std::size_t, double>> r;  // R number and value, ascending
+  ToolReadout tool;
+  core::ApproachPoints approach;                                 // $P_APR, $P_AEP, $P_APDV
+  std::map<std::string, const interp::UserVariable*> variables;  // sorted by name
+};
+
+void writeVariablesJson(std::ostream& out, const VariablesReport& report);
+
+}  // namespace ncoffset::out
