@@ -500,7 +500,7 @@ void Interpreter::finishBlock() {
     int n = modal_.frame_select == 500  ? 0
             : modal_.frame_select < 100 ? modal_.frame_select - 53
                                         : modal_.frame_select - 500;
-    iframe_ = uifr_[static_cast<size_t>(n)];
+    frames_.select(static_cast<size_t>(n));
     frames_changed = true;
   }
   bool axes_consumed = false;
@@ -512,14 +512,15 @@ void Interpreter::finishBlock() {
     // G58 replaces the coarse, G59 the fine translation of the programmable frame, per axis.
     for (int i = 0; i < 3; ++i) {
       if (!words_.axis[i]) continue;
-      (words_.axial_offset == 58 ? pframe_.coarse : pframe_.fine)[i] = toMm(words_.axis_value[i]);
+      (words_.axial_offset == 58 ? frames_.programmable().coarse : frames_.programmable().fine)[i] =
+          toMm(words_.axis_value[i]);
     }
     frames_changed = true;
     axes_consumed = true;
   } else if (words_.axial_offset == 25 || words_.axial_offset == 26) {
     axes_consumed = true;  // G25/G26 axis values are working-area limits, not targets
   }
-  if (frames_changed) updateActiveFrame();
+  if (frames_changed) frames_.update();
   executeToolWords();
   if (words_.rpl && words_.frame_command.empty())
     raise(alarm_no::kSyntaxError, "RPL= only with ROT or AROT");
@@ -564,11 +565,11 @@ void Interpreter::finishBlock() {
 void Interpreter::doMotion() {
   const bool suppress = words_.suppress_frames != 0;
   static const core::BlockFrame kNoFrame;
-  const Affine& frame = suppress ? kNoFrame.map() : act_;
+  const Affine& frame = suppress ? kNoFrame.map() : frames_.map();
   // Without a frame WCS = BCS: the products below are skipped (the usual case).
-  const bool plain = suppress || act_identity_;
+  const bool plain = suppress || frames_.isIdentity();
   auto toBcs = [&](const Vec3& p) { return plain ? p : frame.apply(p); };
-  auto wcsOf = [&](const Vec3& bcs) { return act_identity_ ? bcs : act_inverse_.apply(bcs); };
+  auto wcsOf = [&](const Vec3& bcs) { return frames_.toWcs(bcs); };
   // Programming system: the WCS, or the BCS when frames are suppressed (G53/G153/SUPA).
   const Vec3 from = suppress ? bcs_ : wcs_;
   Vec3 target = from;
@@ -591,7 +592,7 @@ void Interpreter::doMotion() {
   if (sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
   // The block keeps its frame from the last motion while the frame state is the same (the
   // usual case: no copy of the map per block).
-  const core::BlockFrame& block_frame = suppress ? kNoFrame : act_frame_;
+  const core::BlockFrame& block_frame = suppress ? kNoFrame : frames_.blockFrame();
   if (m.frame.state() != block_frame.state()) m.frame = block_frame;
   m.line = line_;
   m.file = file_;
@@ -742,6 +743,7 @@ void Interpreter::doMotion() {
 }
 
 void Interpreter::doFrameCommand() {
+  Frame& pf = frames_.programmable();
   const std::string_view cmd = words_.frame_command;
   bool any = words_.axis[0] || words_.axis[1] || words_.axis[2] || words_.rpl;
   Vec3 v;
@@ -752,10 +754,10 @@ void Interpreter::doFrameCommand() {
   if (cmd == "TRANS" || cmd == "ATRANS") {
     Vec3 t{toMm(v.x), toMm(v.y), toMm(v.z)};
     if (cmd == "TRANS") {
-      pframe_ = Frame();
-      pframe_.coarse = t;
+      pf = Frame();
+      pf.coarse = t;
     } else {
-      pframe_.addTranslation(t);
+      pf.addTranslation(t);
     }
     return;
   }
@@ -772,10 +774,10 @@ void Interpreter::doFrameCommand() {
       r = rpyMatrix(v);
     }
     if (cmd == "ROT") {
-      pframe_ = Frame();
-      if (any) pframe_.rotation = rpyAngles(r);
+      pf = Frame();
+      if (any) pf.rotation = rpyAngles(r);
     } else {
-      pframe_.addRotation(r);
+      pf.addRotation(r);
     }
     return;
   }
@@ -789,25 +791,17 @@ void Interpreter::doFrameCommand() {
       s[i] = v[i];
     }
     if (cmd == "SCALE") {
-      pframe_ = Frame();
-      pframe_.scale = s;
+      pf = Frame();
+      pf.scale = s;
     } else {
-      pframe_.addScale(s);
+      pf.addScale(s);
     }
     return;
   }
   // MIRROR / AMIRROR: the value is arbitrary (write 0); MD10610 = 0: about the programmed axis.
-  if (cmd == "MIRROR") pframe_ = Frame();
+  if (cmd == "MIRROR") pf = Frame();
   for (int i = 0; i < 3; ++i)
-    if (words_.axis[i]) pframe_.addMirror(i);
-}
-
-void Interpreter::updateActiveFrame() {
-  act_ = ncoffset::chain(iframe_, pframe_).affine();
-  act_inverse_ = act_.inverse();
-  act_identity_ = act_.isIdentity();
-  ++act_serial_;
-  act_frame_ = core::BlockFrame(act_, act_serial_, act_identity_);
+    if (words_.axis[i]) pf.addMirror(i);
 }
 
 }  // namespace ncoffset::interp

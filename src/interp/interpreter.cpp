@@ -24,8 +24,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
       first_(first),
       sink_(sink),
       eval_(*this),
-      vars_(options.limits, static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM"))),
-      uifr_(100) {
+      vars_(options.limits, static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM"))) {
   md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
   md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
@@ -43,7 +42,6 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
   sd_wear_sign_ = data_.find("$SC_WEAR_SIGN");
   sd_length_const_ = data_.find("$SC_TOOL_LENGTH_CONST");
   sd_length_type_ = data_.find("$SC_TOOL_LENGTH_TYPE");
-  updateActiveFrame();
 }
 
 Interpreter::~Interpreter() = default;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/stage.hpp"
+#include "interp/frame_state.hpp"
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
 #include "interp/variable_store.hpp"
@@ -113,7 +114,6 @@ class Interpreter final : public lang::Environment {
                    const lang::Value& v);
   Frame* frameByName(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                      bool& whole);
-  void updateActiveFrame();
 
   RunOptions options_;
   core::Stage& first_;
@@ -145,17 +145,8 @@ class Interpreter final : public lang::Environment {
   bool ended_ = false;
   bool init_file_ = false;
 
-  // Frames (K2): settable frames $P_UIFR[0..99], the active settable frame, the programmable
-  // frame, and their product.
-  std::vector<Frame> uifr_;
-  Frame iframe_;
-  Frame pframe_;
-  Affine act_;
-  Affine act_inverse_;
-  core::MotionBlock motion_;           // doMotion's block (reused, see there)
-  bool act_identity_ = true;           // act_ is exactly the identity: doMotion skips the products
-  core::BlockFrame act_frame_;         // act_ as the blocks carry it
-  unsigned long long act_serial_ = 1;  // counts the changes of act_ (BlockFrame::state)
+  FrameState frames_;
+  core::MotionBlock motion_;  // doMotion's block (reused, see there)
   // Machine data read per block, looked up once.
   int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
   int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0, md_check_blocks_ = 0;

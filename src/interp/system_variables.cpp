@@ -59,13 +59,13 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
       raise(alarm_no::kArrayIndex1,
             fmt::format("illegal array index 1: $P_UIFR[{}] (0..{}, MD28080)", n, count - 1));
     whole = idx.size() == 1;
-    return &uifr_[static_cast<size_t>(n)];
+    return &frames_.settable(static_cast<size_t>(n));
   }
   Frame* f = nullptr;
   if (name == "$P_PFRAME")
-    f = &pframe_;
+    f = &frames_.programmable();
   else if (name == "$P_IFRAME")
-    f = &iframe_;
+    f = &frames_.settableActive();
   else
     return nullptr;
   if (indexed && idx.size() != 2)
@@ -108,7 +108,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     return true;
   }
   if (name == "$P_ACTFRAME") {
-    Frame act = ncoffset::chain(iframe_, pframe_);
+    Frame act = frames_.active();
     if (!indexed) {
       out = frameValue(act);
       return true;
@@ -187,8 +187,8 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     }
   }
   // $P_UIFR takes effect at the next G500/G54..G599 (K2); $P_IFRAME and $P_PFRAME at once.
-  if (f != &pframe_ && f != &iframe_) return;
-  updateActiveFrame();
+  if (f != &frames_.programmable() && f != &frames_.settableActive()) return;
+  frames_.update();
 }
 
 Value Interpreter::call(std::string_view name, std::span<const Value> args) {

@@ -130,7 +130,7 @@ void Interpreter::selectEdge(int d) {
   edge_.settings.wear_sign = data_.get(sd_wear_sign_) != 0;
   edge_.settings.length_const = static_cast<long>(data_.get(sd_length_const_));
   edge_.settings.length_type = static_cast<long>(data_.get(sd_length_type_));
-  edge_.mirrored = ncoffset::chain(iframe_, pframe_).mirror;
+  edge_.mirrored = frames_.active().mirror;
   edge_.radius = effectiveLengths(edge_.data, edge_.settings).radius;
   edge_.offset_cached = false;
 }
@@ -292,7 +292,8 @@ Value Interpreter::callLentoax(std::span<const Value> args) {
                upper == "B" || upper == "KCS" || upper == "K" || upper == "TCS" || upper == "T";
   if (!known) return Value::integer(-1);
   if (!edge_.valid) return Value::integer(-2);
-  r = lentoax(edge_.data, edge_.settings, modal_.plane, edge_.mirrored, act_.linear, coord);
+  r = lentoax(edge_.data, edge_.settings, modal_.plane, edge_.mirrored, frames_.map().linear,
+              coord);
   for (size_t i = 0; i < 3; ++i) {
     axind->data[i] = Value::integer(r.axind[i]);
     for (size_t k = 0; k < 3; ++k) matrix->data[i * 3 + k] = Value::real(r.matrix[i][k]);
