@@ -119,7 +119,7 @@ void Interpreter::collectWord(const Stmt& st) {
         if (!st.literal) {
           Value v = eval_.eval(block_, st.expr);
           if (v.isText()) {
-            words_.tool = resolveToolName(v.str);
+            words_.tool = tools_.resolveName(v.str);
             return;
           }
         }
@@ -659,7 +659,7 @@ void Interpreter::doMotion() {
     m.turns = 0;
     // Tool length: each BCS axis takes up the length vector with the first linear block that
     // moves it after the selection (W1 2.1, spec §2.6).
-    Vec3 full = toolOffset();
+    Vec3 full = tools_.lengthVector(modal_.plane);
     Vec3 before = applied_offset_;
     if (plain) {
       for (int i = 0; i < 3; ++i)
@@ -681,7 +681,7 @@ void Interpreter::doMotion() {
   m.tool_offset = applied_offset_;
   m.plane = modal_.plane;
   m.trc.mode = modal_.trc;
-  m.trc.radius = modal_.offn + (edge_.valid ? edge_.radius : 0.0);
+  m.trc.radius = modal_.offn + tools_.radius();
   m.trc.approach = modal_.approach;
   m.trc.corner = modal_.corner;
   m.trc.collision = modal_.collision;

@@ -24,7 +24,8 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
       first_(first),
       sink_(sink),
       eval_(*this),
-      vars_(options.limits, static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM"))) {
+      vars_(options.limits, static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM"))),
+      tools_(options.limits.max_tool_edges) {
   md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
   md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
@@ -584,15 +585,13 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
   for (size_t i = 0; i < vars_.rCount(); ++i)
     if (vars_.rWritten(i)) report.r.emplace_back(i, vars_.rValue(i));
   // The active tool as the $P_TOOL.. system variables show it (docs/tool-offsets.md).
-  EffectiveLengths l =
-      edge_.valid ? effectiveLengths(edge_.data, edge_.settings) : EffectiveLengths{};
-  Vec3 o;
-  if (edge_.valid)
-    o = toolOrientation(edge_.data, edge_.settings, modal_.plane, edge_.mirrored);
-  else
-    o[planeAxes(modal_.plane).applicate] = 1;
-  report.tool = {active_tool_, active_edge_, {l.total[0], l.total[1], l.total[2]}, l.radius, o,
-                 toolOffset()};
+  const EffectiveLengths l = tools_.lengths();
+  report.tool = {tools_.activeTool(),
+                 tools_.activeEdge(),
+                 {l.total[0], l.total[1], l.total[2]},
+                 l.radius,
+                 tools_.orientation(modal_.plane),
+                 tools_.lengthVector(modal_.plane)};
   report.approach = approach_points_;
   for (const auto& [k, v] : vars_.globals()) report.variables[k] = &v;
   for (const auto& [k, v] : vars_.mainVariables()) report.variables[k] = &v;

@@ -23,7 +23,7 @@
 #include "lang/source_file.hpp"
 #include "ncoffset/channel.hpp"
 #include "ncoffset/frame.hpp"
-#include "tool/tool_store.hpp"
+#include "tool/tool_selection.hpp"
 
 namespace ncoffset::interp {
 
@@ -97,15 +97,7 @@ class Interpreter final : public lang::Environment {
 
   // --- tool data and selection (tool_selection.cpp) ---
   void executeToolWords();
-  void changeTool(int t, bool edge_programmed);
-  void selectEdge(int d);
-  Vec3 toolOffset() const;
-  bool readTool(std::string_view name, std::span<const lang::Value> idx, bool indexed,
-                lang::Value& out);
-  bool writeTool(std::string_view name, std::span<const lang::Value> idx, bool indexed,
-                 const lang::Value& v);
   lang::Value callLentoax(std::span<const lang::Value> args);
-  int resolveToolName(const std::string& name);
 
   // --- system variables and frame functions (system_variables.cpp) ---
   bool readSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
@@ -155,22 +147,7 @@ class Interpreter final : public lang::Environment {
 
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection
   // snapshotted (data, setting data and mirroring act from the next edge selection).
-  tool::ToolStore tools_;
-  size_t tool_edges_ = 0;
-  int active_tool_ = 0;
-  int active_edge_ = 0;
-  int preselected_tool_ = -1;
-  struct EdgeSnapshot {
-    bool valid = false;
-    EdgeData data;
-    ToolSettings settings;
-    std::array<bool, 3> mirrored{false, false, false};
-    double radius = 0;  // effective radius (edge + wear), fixed with the snapshot
-    // toolOffset() for `cached_plane` (computed once per edge and plane, not per block).
-    mutable bool offset_cached = false;
-    mutable Plane cached_plane = Plane::G17;
-    mutable Vec3 cached_offset;
-  } edge_;
+  tool::ToolSelection tools_;
   Vec3 applied_offset_;  // BCS length vector as taken up axis by axis by linear blocks
   int md_change_mode_ = 0, md_change_m_ = 0, md_default_edge_ = 0;
   int sd_mirror_length_ = 0, sd_mirror_wear_ = 0, sd_cutpos_ = 0, sd_wear_sign_ = 0,

@@ -89,7 +89,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     return true;
   }
   if (name.empty() || name[0] != '$') return false;
-  if (readTool(name, idx, indexed, out)) return true;
+  if (tools_.read(name, idx, indexed, modal_.plane, out)) return true;
   if (name == "$P_APR" || name == "$P_AEP") {
     // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
     if (!indexed || idx.size() != 1)
@@ -156,7 +156,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     }
     return;
   }
-  if (writeTool(name, idx, indexed, v)) return;
+  if (tools_.write(name, idx, indexed, v)) return;
   if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
     raise(alarm_no::kNameNotDefined, fmt::format("{} can only be read", name));
   bool whole;

@@ -28,6 +28,10 @@ class ToolStore {
     auto it = tools_.find(t);
     return it == tools_.end() ? nullptr : &it->second;
   }
+  const Tool* tool(int t) const {
+    auto it = tools_.find(t);
+    return it == tools_.end() ? nullptr : &it->second;
+  }
   const EdgeData* edge(int t, int d) const {
     auto it = tools_.find(t);
     if (it == tools_.end()) return nullptr;

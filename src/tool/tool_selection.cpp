@@ -1,0 +1,91 @@
+#include "tool/tool_selection.hpp"
+
+#include <fmt/format.h>
+
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::tool {
+
+namespace {
+
+[[noreturn]] void edgeMissing(int t, int d) {
+  raise(alarm_no::kEdgeNotExisting, fmt::format("T no. = {}, D no. = {} not existing", t, d));
+}
+
+}  // namespace
+
+int ToolSelection::resolveName(const std::string& name) const {
+  int t = tools_.findByName(name);
+  if (!t)
+    raise(alarm_no::kToolNotExisting,
+          fmt::format("T= \"{}\" not existing (no tool with $TC_TP2=\"{}\")", name, name));
+  return t;
+}
+
+void ToolSelection::execute(const ToolWords& w, bool change_on_t, const SelectionContext& ctx) {
+  if (w.tool) {
+    int t = *w.tool;
+    if (t != 0 && !tools_.tool(t))
+      raise(alarm_no::kToolNotExisting, fmt::format("T= {} not existing", t));
+    if (change_on_t)
+      changeTool(t, w.edge.has_value(), ctx);
+    else
+      preselected_tool_ = t;  // MD22550 = 1: T preselects, M6 changes
+  }
+  if (w.tool_change && !change_on_t && preselected_tool_ >= 0) {
+    changeTool(preselected_tool_, w.edge.has_value(), ctx);
+    preselected_tool_ = -1;
+  }
+  if (w.edge) selectEdge(*w.edge, ctx);
+}
+
+void ToolSelection::changeTool(int t, bool edge_programmed, const SelectionContext& ctx) {
+  active_tool_ = t;
+  if (t == 0) {
+    selectEdge(0, ctx);
+    return;
+  }
+  if (edge_programmed) return;  // the D of the block selects the edge
+  // MD20270: 0 no edge, > 0 that edge, -1 keep the old D number.
+  selectEdge(ctx.default_edge < 0 ? active_edge_ : ctx.default_edge, ctx);
+}
+
+void ToolSelection::selectEdge(int d, const SelectionContext& ctx) {
+  if (d == 0) {
+    active_edge_ = 0;
+    edge_ = EdgeSnapshot{};
+    return;
+  }
+  const EdgeData* e = tools_.edge(active_tool_, d);
+  if (!e) edgeMissing(active_tool_, d);
+  active_edge_ = d;
+  edge_.valid = true;
+  edge_.data = *e;
+  edge_.settings = ctx.settings;
+  edge_.mirrored = ctx.mirrored;
+  edge_.radius = effectiveLengths(edge_.data, edge_.settings).radius;
+  edge_.offset_cached = false;
+}
+
+Vec3 ToolSelection::lengthVector(Plane plane) const {
+  if (!edge_.valid) return {};
+  if (!edge_.offset_cached || edge_.cached_plane != plane) {
+    edge_.cached_offset = ncoffset::lengthVector(edge_.data, edge_.settings, plane, edge_.mirrored);
+    edge_.cached_plane = plane;
+    edge_.offset_cached = true;
+  }
+  return edge_.cached_offset;
+}
+
+EffectiveLengths ToolSelection::lengths() const {
+  return edge_.valid ? effectiveLengths(edge_.data, edge_.settings) : EffectiveLengths{};
+}
+
+Vec3 ToolSelection::orientation(Plane plane) const {
+  if (edge_.valid) return toolOrientation(edge_.data, edge_.settings, plane, edge_.mirrored);
+  Vec3 o;
+  o[planeAxes(plane).applicate] = 1;
+  return o;
+}
+
+}  // namespace ncoffset::tool

@@ -1,0 +1,96 @@
+// Tool selection of the channel (W1 1, spec §1.1): T, D and M6 with MD22550
+// TOOL_CHANGE_MODE and MD20270 CUTTING_EDGE_DEFAULT, the offset memory ($TC_DP.., $TC_DPV..,
+// $TC_DPC.., $TC_TP..) and what the active edge gives the path: its radius, its length vector in
+// the BCS and its orientation. Data and setting data act from the next edge selection (W1 2.5):
+// the selection snapshots them.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "lang/value.hpp"
+#include "ncoffset/tool.hpp"
+#include "tool/tool_store.hpp"
+
+namespace ncoffset::tool {
+
+// What an edge selection takes from the channel: the setting data SD42900..SD42950, MD20270,
+// and the mirroring of the frame active at the selection.
+struct SelectionContext {
+  ToolSettings settings;
+  int default_edge = 1;  // MD20270: 0 no edge, > 0 that edge, -1 keep the old D number
+  std::array<bool, 3> mirrored{false, false, false};
+};
+
+// The tool words of one block.
+struct ToolWords {
+  std::optional<int> tool;   // T
+  std::optional<int> edge;   // D
+  bool tool_change = false;  // M6 (MD22560) for the master spindle
+};
+
+class ToolSelection {
+ public:
+  explicit ToolSelection(size_t max_edges) : max_edges_(max_edges) {}
+
+  // Executes T, M6 and D of a block (MD22550 = 0: T changes the tool; 1: T preselects, M6
+  // changes). Alarms 17191 (tool not existing), 17181 (edge not existing).
+  void execute(const ToolWords& w, bool change_on_t, const SelectionContext& ctx);
+  // The tool whose $TC_TP2 identifier is `name` (T="name"), alarm 17191 if none.
+  int resolveName(const std::string& name) const;
+
+  int activeTool() const { return active_tool_; }
+  int activeEdge() const { return active_edge_; }
+  bool hasEdge() const { return edge_.valid; }
+  // The compensation radius of the active edge (edge + wear), 0 without an edge.
+  double radius() const { return edge_.valid ? edge_.radius : 0.0; }
+  // The BCS vector from the tool tip to the carrier reference point in `plane` (zero without
+  // an edge), computed once per selection and plane.
+  Vec3 lengthVector(Plane plane) const;
+  // $P_TOOLL / $P_TOOLR: the effective lengths (zero without an edge).
+  EffectiveLengths lengths() const;
+  // $P_TOOLO: the unit orientation (without an edge the plane's applicate).
+  Vec3 orientation(Plane plane) const;
+
+  // $P_TOOLNO, $P_TOOL, $P_TOOLP, $P_TOOLR, $P_TOOLL[k], $P_TOOLO[k] and the $TC_.. data. False
+  // for a name that is no tool variable.
+  bool read(std::string_view name, std::span<const lang::Value> idx, bool indexed, Plane plane,
+            lang::Value& out) const;
+  bool write(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+             const lang::Value& v);
+
+  // LENTOAX(_AXIND, _MATRIX[, _COORD]) (W1 2.11): `array` finds the caller's INT[3] and
+  // REAL[3,3] variables (it raises the call's alarm for anything else).
+  using ArrayLookup = std::function<std::span<lang::Value>(const lang::Value& ref, bool integer,
+                                                           int rows, int cols, const char* what)>;
+  lang::Value callLentoax(std::span<const lang::Value> args, const ArrayLookup& array, Plane plane,
+                          const Mat3& frame_linear) const;
+
+ private:
+  void changeTool(int t, bool edge_programmed, const SelectionContext& ctx);
+  void selectEdge(int d, const SelectionContext& ctx);
+
+  ToolStore tools_;
+  size_t max_edges_;
+  size_t edges_ = 0;  // cutting edges in the offset memory
+  int active_tool_ = 0;
+  int active_edge_ = 0;
+  int preselected_tool_ = -1;
+  struct EdgeSnapshot {
+    bool valid = false;
+    EdgeData data;
+    ToolSettings settings;
+    std::array<bool, 3> mirrored{false, false, false};
+    double radius = 0;  // effective radius (edge + wear), fixed with the snapshot
+    // lengthVector() for `cached_plane` (computed once per edge and plane, not per block).
+    mutable bool offset_cached = false;
+    mutable Plane cached_plane = Plane::G17;
+    mutable Vec3 cached_offset;
+  } edge_;
+};
+
+}  // namespace ncoffset::tool

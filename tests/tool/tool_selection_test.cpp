@@ -1,0 +1,105 @@
+// The tool selection alone (src/tool/tool_selection.hpp): T/D/M6 per MD22550 and MD20270, the
+// offset memory written as $TC_DP.., and what the active edge gives the path.
+#include "tool/tool_selection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::tool {
+namespace {
+
+using lang::Value;
+
+void setEdge(ToolSelection& s, int t, int d, int n, double x) {
+  std::vector<Value> idx{Value::integer(t), Value::integer(d)};
+  ASSERT_TRUE(s.write("$TC_DP" + std::to_string(n), idx, true, Value::real(x)));
+}
+
+// T1 D1: a milling tool (type 120) of length 100 and radius 5; D2 radius 3.
+ToolSelection millingTool() {
+  ToolSelection s(32000);
+  setEdge(s, 1, 1, 1, 120);
+  setEdge(s, 1, 1, 3, 100);
+  setEdge(s, 1, 1, 6, 5);
+  setEdge(s, 1, 2, 1, 120);
+  setEdge(s, 1, 2, 6, 3);
+  return s;
+}
+
+int alarmOf(auto&& f) {
+  try {
+    f();
+  } catch (const AlarmError& e) {
+    return e.number();
+  }
+  return 0;
+}
+
+TEST(ToolSelection, TChangesTheToolAndTheDefaultEdgeIsSelected) {
+  ToolSelection s = millingTool();
+  SelectionContext ctx;  // MD20270 = 1
+  s.execute({1, std::nullopt, false}, true, ctx);
+  EXPECT_EQ(s.activeTool(), 1);
+  EXPECT_EQ(s.activeEdge(), 1);
+  EXPECT_EQ(s.radius(), 5);
+  // G17: L1 acts in Z (spec §2.2).
+  Vec3 l = s.lengthVector(Plane::G17);
+  EXPECT_EQ(l.z, 100);
+  EXPECT_EQ(l.x, 0);
+  s.execute({std::nullopt, 2, false}, true, ctx);
+  EXPECT_EQ(s.radius(), 3);
+}
+
+TEST(ToolSelection, WithMd22550TPreselectsAndM6Changes) {
+  ToolSelection s = millingTool();
+  SelectionContext ctx;
+  s.execute({1, std::nullopt, false}, false, ctx);
+  EXPECT_EQ(s.activeTool(), 0);
+  Value p;
+  ASSERT_TRUE(s.read("$P_TOOLP", {}, false, Plane::G17, p));
+  EXPECT_EQ(p.num, 1);
+  s.execute({std::nullopt, std::nullopt, true}, false, ctx);
+  EXPECT_EQ(s.activeTool(), 1);
+  EXPECT_EQ(s.activeEdge(), 1);
+}
+
+TEST(ToolSelection, DataActFromTheNextSelection) {
+  ToolSelection s = millingTool();
+  SelectionContext ctx;
+  s.execute({1, 1, false}, true, ctx);
+  setEdge(s, 1, 1, 6, 7);  // W1 2.5: a changed radius acts with the next D
+  EXPECT_EQ(s.radius(), 5);
+  s.execute({std::nullopt, 1, false}, true, ctx);
+  EXPECT_EQ(s.radius(), 7);
+}
+
+TEST(ToolSelection, MissingToolAndEdgeGiveTheControlsAlarms) {
+  ToolSelection s = millingTool();
+  SelectionContext ctx;
+  EXPECT_EQ(alarmOf([&] {
+              s.execute({2, std::nullopt, false}, true, ctx);
+            }),
+            alarm_no::kToolNotExisting);
+  s.execute({1, std::nullopt, false}, true, ctx);
+  EXPECT_EQ(alarmOf([&] {
+              s.execute({std::nullopt, 3, false}, true, ctx);
+            }),
+            alarm_no::kEdgeNotExisting);
+}
+
+TEST(ToolSelection, NoEdgeMeansNoOffset) {
+  ToolSelection s = millingTool();
+  SelectionContext ctx;
+  ctx.default_edge = 0;  // MD20270 = 0
+  s.execute({1, std::nullopt, false}, true, ctx);
+  EXPECT_FALSE(s.hasEdge());
+  EXPECT_EQ(s.radius(), 0);
+  EXPECT_EQ(s.lengthVector(Plane::G17).z, 0);
+  EXPECT_EQ(s.orientation(Plane::G18).y, 1);  // without an edge: the plane's applicate
+}
+
+}  // namespace
+}  // namespace ncoffset::tool
