@@ -5,7 +5,6 @@
 
 #include <cmath>
 
-#include "geom/arc.hpp"
 #include "interp/interpreter.hpp"
 #include "ncoffset/alarm.hpp"
 
@@ -43,7 +42,7 @@ bool isOneOf(std::string_view w, std::initializer_list<std::string_view> list) {
 }  // namespace
 
 double Interpreter::toMm(double v) const {
-  return modal_.units == Units::G70 || modal_.units == Units::G700 ? v * 25.4 : v;
+  return interp::toMm(modal_, v);
 }
 
 void Interpreter::collectWord(const Stmt& st) {
@@ -536,12 +535,12 @@ void Interpreter::finishBlock() {
     raise(alarm_no::kCircleProgramming,
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
-  block_moved_ = false;
+  bool moved = false;
   if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
-    doMotion();
+    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
   // compensated elements counts against MD20250.
-  if (!block_moved_ && !block_.stmts.empty() && block_.stmts.front().kind == lang::StmtKind::Word)
+  if (!moved && !block_.stmts.empty() && block_.stmts.front().kind == lang::StmtKind::Word)
     first_.blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
@@ -560,186 +559,6 @@ void Interpreter::finishBlock() {
   } else if (words_.repeat) {
     raise(alarm_no::kSyntaxError, "pass count P without a subprogram call");
   }
-}
-
-void Interpreter::doMotion() {
-  const bool suppress = words_.suppress_frames != 0;
-  static const core::BlockFrame kNoFrame;
-  const Affine& frame = suppress ? kNoFrame.map() : frames_.map();
-  // Without a frame WCS = BCS: the products below are skipped (the usual case).
-  const bool plain = suppress || frames_.isIdentity();
-  auto toBcs = [&](const Vec3& p) { return plain ? p : frame.apply(p); };
-  auto wcsOf = [&](const Vec3& bcs) { return frames_.toWcs(bcs); };
-  // Programming system: the WCS, or the BCS when frames are suppressed (G53/G153/SUPA).
-  const Vec3 from = suppress ? bcs_ : wcs_;
-  Vec3 target = from;
-  for (int i = 0; i < 3; ++i) {
-    if (!words_.axis[i]) continue;
-    double v = toMm(words_.axis_value[i]);
-    bool absolute = words_.axis_mode[i] == AxisMode::AC ||
-                    (words_.axis_mode[i] == AxisMode::Default && !modal_.incremental);
-    target[i] = absolute ? v : from[i] + v;
-    if (!std::isfinite(target[i]) || std::fabs(target[i]) > 1e9)
-      raise(alarm_no::kValueRange,
-            fmt::format("value range exceeded: position {} of axis {}", target[i], "XYZ"[i]));
-  }
-  // The interpreter's one motion block, reused: every member is set below (no zeroing of the
-  // whole block for every motion). Later stages copy what they keep.
-  core::MotionBlock& m = motion_;
-  m.motion = modal_.motion;
-  // A SAR block is a linear block: its own G0/G1 (G2/G3 modal count as G1) moves P2 -> P0.
-  const bool sar = words_.sar != core::SarKind::None;
-  if (sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
-  // The block keeps its frame from the last motion while the frame state is the same (the
-  // usual case: no copy of the map per block).
-  const core::BlockFrame& block_frame = suppress ? kNoFrame : frames_.blockFrame();
-  if (m.frame.state() != block_frame.state()) m.frame = block_frame;
-  m.line = line_;
-  m.file = file_;
-  m.start = suppress ? bcs_ : wcsOf(bcs_);
-  m.end = target;
-  if (m.motion != Motion::G0) {
-    if (modal_.feed <= 0)
-      raise(alarm_no::kFeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
-    m.feed = modal_.feed;
-    m.has_feed = true;
-  } else {
-    m.feed = 0;
-    m.has_feed = false;
-  }
-  m.sar.kind = core::SarKind::None;
-  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
-    PlaneAxes pa = planeAxes(modal_.plane);
-    if (words_.centre[pa.applicate])
-      raise(alarm_no::kCircleProgramming,
-            fmt::format("circle programming error: {} is not an interpolation parameter in the "
-                        "active plane",
-                        "IJK"[pa.applicate]));
-    const Mat3& l = frame.linear;
-    Vec3 ea, eo;
-    ea[pa.abscissa] = 1;
-    eo[pa.ordinate] = 1;
-    if (!plain && std::fabs(norm(l * ea) - norm(l * eo)) > 1e-9)
-      raise(alarm_no::kFrameNotAffine,
-            "a circle under different scale factors of the plane axes is an ellipse, which is not "
-            "modelled");
-    geom::ArcRequest req;
-    req.start = {from[pa.abscissa], from[pa.ordinate]};
-    req.ccw = m.motion == Motion::G3;
-    req.tol_const = data_.get(md_circle_const_);
-    req.tol_factor = data_.get(md_circle_factor_);
-    if (words_.axis[pa.abscissa] || words_.axis[pa.ordinate])
-      req.end = geom::Vec2{target[pa.abscissa], target[pa.ordinate]};
-    if (words_.centre[pa.abscissa] || words_.centre[pa.ordinate]) {
-      geom::Vec2 c;
-      int axes[2] = {pa.abscissa, pa.ordinate};
-      double* out[2] = {&c.a, &c.o};
-      for (int k = 0; k < 2; ++k) {
-        int ax = axes[k];
-        double v = words_.centre[ax] ? toMm(words_.centre_value[ax]) : 0;
-        // I, J, K are incremental from the start point unless written =AC(..).
-        *out[k] = words_.centre_mode[ax] == AxisMode::AC ? v : from[ax] + v;
-      }
-      req.centre = c;
-    }
-    if (words_.cr) req.cr = toMm(*words_.cr);
-    if (words_.ar) req.ar = *words_.ar;
-    geom::ArcSolution sol = geom::solveArc(req);
-    target[pa.abscissa] = sol.end.a;
-    target[pa.ordinate] = sol.end.o;
-    m.end = target;
-    m.centre = from;
-    m.centre[pa.abscissa] = sol.centre.a;
-    m.centre[pa.ordinate] = sol.centre.o;
-    m.applicate = pa.applicate;
-    m.turns = words_.turn.value_or(0);
-  } else {
-    m.centre = {};
-    m.applicate = 2;
-    m.turns = 0;
-    // Tool length: each BCS axis takes up the length vector with the first linear block that
-    // moves it after the selection (W1 2.1, spec §2.6).
-    Vec3 full = tools_.lengthVector(modal_.plane);
-    Vec3 before = applied_offset_;
-    if (plain) {
-      for (int i = 0; i < 3; ++i)
-        if (words_.axis[i]) applied_offset_[i] = full[i];
-    } else {
-      for (int k = 0; k < 3; ++k)
-        for (int i = 0; i < 3; ++i)
-          if (words_.axis[i] &&
-              std::fabs(frame.linear.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
-            applied_offset_[k] = full[k];
-    }
-    Vec3 moved = (toBcs(target) + applied_offset_) - (bcs_ + before);
-    if (std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12 &&
-        !sar) {
-      wcs_ = suppress ? wcsOf(bcs_) : target;
-      return;  // zero-length block: no segment
-    }
-  }
-  m.tool_offset = applied_offset_;
-  m.plane = modal_.plane;
-  m.trc.mode = modal_.trc;
-  m.trc.radius = modal_.offn + tools_.radius();
-  m.trc.approach = modal_.approach;
-  m.trc.corner = modal_.corner;
-  m.trc.collision = modal_.collision;
-  m.trc.disc = modal_.disc;
-  m.trc.strategy = modal_.trc_strategy;
-  m.trc.corner_limit = data_.get(md_corner_limit_);
-  m.trc.curve_insert_limit = data_.get(md_insert_limit_);
-  m.trc.max_dummy_blocks = static_cast<int>(data_.get(md_dummy_blocks_));
-  m.trc.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
-  // Computed geometry must stay finite and within the machine's number range: a frame with a
-  // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
-  // The end point, and a circle's centre (a line has none).
-  const Vec3 checks[] = {toBcs(m.end) + applied_offset_, toBcs(m.centre)};
-  const int n_checks = m.motion == Motion::G2 || m.motion == Motion::G3 ? 2 : 1;
-  for (int c = 0; c < n_checks; ++c)
-    for (int i = 0; i < 3; ++i) {
-      const Vec3& p = checks[c];
-      if (std::fabs(p[i]) <= 1e9) continue;  // the usual case: one comparison (false for NaN)
-      if (!std::isfinite(p[i]))
-        raise(alarm_no::kArithmetic,
-              "arithmetic error in part program: position is not a finite number");
-      raise(alarm_no::kValueRange,
-            fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i],
-                        "XYZ"[i]));
-    }
-  block_moved_ = true;
-  if (sar) {
-    m.sar = core::SarRequest{};
-    core::SarRequest& q = m.sar;
-    q.kind = words_.sar;
-    q.side = modal_.sar_side;
-    q.infeed = modal_.sar_infeed;
-    q.has_disr = words_.disr.has_value();
-    q.disr = words_.disr.value_or(0);
-    q.has_discl = words_.discl.has_value();
-    q.discl = words_.discl.value_or(0);
-    q.discl_ac = words_.discl_ac;
-    q.has_disrp = words_.disrp.has_value();
-    q.disrp = words_.disrp.value_or(0);
-    q.disrp_ac = words_.disrp_ac;
-    q.has_fad = words_.fad.has_value();
-    q.fad = words_.fad.value_or(0);
-    PlaneAxes pa = planeAxes(modal_.plane);
-    q.plane_axis = words_.axis[pa.abscissa] || words_.axis[pa.ordinate];
-    q.any_axis = q.plane_axis || words_.axis[pa.applicate];
-    q.f_programmed = words_.f.has_value();
-    q.feed_value = modal_.feed;
-    q.feed_before = feed_before_;
-    q.rapid_before = motion_before_ == Motion::G0;
-    q.max_dummy_blocks = static_cast<int>(data_.get(md_sar_dummy_blocks_));
-  } else if (words_.disr || words_.discl || words_.disrp || words_.fad) {
-    raise(alarm_no::kSyntaxError, "DISR, DISCL, DISRP and FAD only in a SAR block (G147..G348)");
-  }
-  core::Feedback back = first_.motion(m);
-  if (back.approach) approach_points_ = *back.approach;
-  if (back.end_point) target = *back.end_point;  // implicit retraction end point
-  bcs_ = toBcs(target);
-  wcs_ = suppress ? wcsOf(bcs_) : target;
 }
 
 void Interpreter::doFrameCommand() {

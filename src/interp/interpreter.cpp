@@ -25,15 +25,9 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
       sink_(sink),
       eval_(*this),
       vars_(options.limits, static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM"))),
-      tools_(options.limits.max_tool_edges) {
-  md_circle_const_ = data_.find("$MC_CIRCLE_ERROR_CONST");
-  md_circle_factor_ = data_.find("$MC_CIRCLE_ERROR_FACTOR");
+      tools_(options.limits.max_tool_edges),
+      motion_(first, data_, frames_, tools_) {
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
-  md_corner_limit_ = data_.find("$MC_CUTCOM_CORNER_LIMIT");
-  md_insert_limit_ = data_.find("$MC_CUTCOM_CURVE_INSERT_LIMIT");
-  md_dummy_blocks_ = data_.find("$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS");
-  md_check_blocks_ = data_.find("$MC_CUTCOM_MAXNUM_CHECK_BLOCKS");
-  md_sar_dummy_blocks_ = data_.find("$MC_WAB_MAXNUM_DUMMY_BLOCKS");
   md_change_mode_ = data_.find("$MC_TOOL_CHANGE_MODE");
   md_change_m_ = data_.find("$MC_TOOL_CHANGE_M_CODE");
   md_default_edge_ = data_.find("$MC_CUTTING_EDGE_DEFAULT");
@@ -592,7 +586,7 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
                  l.radius,
                  tools_.orientation(modal_.plane),
                  tools_.lengthVector(modal_.plane)};
-  report.approach = approach_points_;
+  report.approach = motion_.approachPoints();
   for (const auto& [k, v] : vars_.globals()) report.variables[k] = &v;
   for (const auto& [k, v] : vars_.mainVariables()) report.variables[k] = &v;
   out::writeVariablesJson(out, report);

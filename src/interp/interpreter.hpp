@@ -14,6 +14,7 @@
 #include "interp/frame_state.hpp"
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
+#include "interp/motion_builder.hpp"
 #include "interp/variable_store.hpp"
 #include "interp/variables.hpp"
 #include "lang/block.hpp"
@@ -91,7 +92,6 @@ class Interpreter final : public lang::Environment {
   void gCode(int code);
   void setSar(core::SarKind kind);
   void finishBlock();
-  void doMotion();
   void doFrameCommand();
   double toMm(double v) const;
 
@@ -109,9 +109,8 @@ class Interpreter final : public lang::Environment {
 
   RunOptions options_;
   core::Stage& first_;
-  core::ApproachPoints approach_points_;  // $P_APR, $P_AEP, $P_APDV as fed back
-  double feed_before_ = 0;                // the modal feed before the current block
-  Motion motion_before_ = Motion::G0;     // the modal G0..G3 before the current block
+  double feed_before_ = 0;             // the modal feed before the current block
+  Motion motion_before_ = Motion::G0;  // the modal G0..G3 before the current block
   PathSink& sink_;
   lang::Evaluator eval_;
   MachineData data_;
@@ -138,24 +137,15 @@ class Interpreter final : public lang::Environment {
   bool init_file_ = false;
 
   FrameState frames_;
-  core::MotionBlock motion_;  // doMotion's block (reused, see there)
-  // Machine data read per block, looked up once.
-  int md_circle_const_ = 0, md_circle_factor_ = 0, md_max_disc_ = 0;
-  int md_corner_limit_ = 0, md_insert_limit_ = 0, md_dummy_blocks_ = 0, md_check_blocks_ = 0;
-  int md_sar_dummy_blocks_ = 0;
-  bool block_moved_ = false;  // the executing block handed a motion on
+  int md_max_disc_ = 0;  // MD20220, looked up once
 
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection
   // snapshotted (data, setting data and mirroring act from the next edge selection).
   tool::ToolSelection tools_;
-  Vec3 applied_offset_;  // BCS length vector as taken up axis by axis by linear blocks
+  MotionBuilder motion_;  // after first_, data_, frames_, tools_
   int md_change_mode_ = 0, md_change_m_ = 0, md_default_edge_ = 0;
   int sd_mirror_length_ = 0, sd_mirror_wear_ = 0, sd_cutpos_ = 0, sd_wear_sign_ = 0,
       sd_length_const_ = 0, sd_length_type_ = 0;
-
-  // Positions: last programmed WCS point, and the current BCS point of the tool tip.
-  Vec3 wcs_;
-  Vec3 bcs_;
 };
 
 }  // namespace ncoffset::interp

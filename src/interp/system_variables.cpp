@@ -94,12 +94,12 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
     if (!indexed || idx.size() != 1)
       raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
-    out = Value::real(
-        (name == "$P_APR" ? approach_points_.apr : approach_points_.aep)[axisOf(idx[0])]);
+    out = Value::real((name == "$P_APR" ? motion_.approachPoints().apr
+                                        : motion_.approachPoints().aep)[axisOf(idx[0])]);
     return true;
   }
   if (name == "$P_APDV") {
-    out = Value::integer(approach_points_.valid ? 1 : 0);
+    out = Value::integer(motion_.approachPoints().valid ? 1 : 0);
     return true;
   }
   if (name == "$P_UIFRNUM") {
@@ -122,7 +122,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   }
   if (name == "$P_EP") {
     if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, "$P_EP needs [axis]");
-    out = Value::real(wcs_[axisOf(idx[0])]);
+    out = Value::real(motion_.wcs()[axisOf(idx[0])]);
     return true;
   }
   bool whole;

@@ -185,6 +185,10 @@ void SmoothApproach::pass(const MotionBlock& m) {
 }
 
 core::Feedback SmoothApproach::motion(const MotionBlock& m) {
+  if (state_ == State::Idle && m.sar.kind == core::SarKind::None) {  // the usual block
+    pass(m);
+    return {};
+  }
   take(m);
   if (!has_feedback_) return {};
   has_feedback_ = false;

@@ -1,0 +1,234 @@
+#include "interp/motion_builder.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "geom/arc.hpp"
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::interp {
+
+using lang::AxisMode;
+
+const core::BlockFrame MotionBuilder::kNoFrame;
+
+// The steps of build() are functions of their own for reading; inlined into it, as the one
+// function they once were, since build() runs for every motion block (docs/performance.md).
+#define NCOFFSET_STEP [[gnu::always_inline]] inline
+
+MotionBuilder::MotionBuilder(core::Stage& next, const MachineData& data, const FrameState& frames,
+                             const tool::ToolSelection& tools)
+    : next_(next),
+      data_(data),
+      frames_(frames),
+      tools_(tools),
+      md_circle_const_(data.find("$MC_CIRCLE_ERROR_CONST")),
+      md_circle_factor_(data.find("$MC_CIRCLE_ERROR_FACTOR")),
+      md_corner_limit_(data.find("$MC_CUTCOM_CORNER_LIMIT")),
+      md_insert_limit_(data.find("$MC_CUTCOM_CURVE_INSERT_LIMIT")),
+      md_dummy_blocks_(data.find("$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS")),
+      md_check_blocks_(data.find("$MC_CUTCOM_MAXNUM_CHECK_BLOCKS")),
+      md_sar_dummy_blocks_(data.find("$MC_WAB_MAXNUM_DUMMY_BLOCKS")) {}
+
+NCOFFSET_STEP Vec3 MotionBuilder::target(const BlockWords& w, const ModalState& modal,
+                                         const Vec3& from) const {
+  Vec3 target = from;
+  for (int i = 0; i < 3; ++i) {
+    if (!w.axis[i]) continue;
+    double v = toMm(modal, w.axis_value[i]);
+    bool absolute = w.axis_mode[i] == AxisMode::AC ||
+                    (w.axis_mode[i] == AxisMode::Default && !modal.incremental);
+    target[i] = absolute ? v : from[i] + v;
+    if (!std::isfinite(target[i]) || std::fabs(target[i]) > 1e9)
+      raise(alarm_no::kValueRange,
+            fmt::format("value range exceeded: position {} of axis {}", target[i], "XYZ"[i]));
+  }
+  return target;
+}
+
+bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const BlockContext& at) {
+  suppressed_ = w.suppress_frames != 0;
+  // Without a frame WCS = BCS: the products are skipped (the usual case).
+  const bool plain = suppressed_ || frames_.isIdentity();
+  // Programming system: the WCS, or the BCS when frames are suppressed (G53/G153/SUPA).
+  const Vec3 from = suppressed_ ? bcs_ : wcs_;
+  Vec3 to = target(w, modal, from);
+  core::MotionBlock& m = m_;
+  m.motion = modal.motion;
+  // A SAR block is a linear block: its own G0/G1 (G2/G3 modal count as G1) moves P2 -> P0.
+  const bool sar = w.sar != core::SarKind::None;
+  if (sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
+  // The block keeps its frame from the last motion while the frame state is the same (the
+  // usual case: no copy of the map per block).
+  const core::BlockFrame& block_frame = suppressed_ ? kNoFrame : frames_.blockFrame();
+  if (m.frame.state() != block_frame.state()) m.frame = block_frame;
+  m.line = at.line;
+  m.file = at.file;
+  m.start = suppressed_ ? bcs_ : frames_.toWcs(bcs_);
+  m.end = to;
+  m.has_feed = m.motion != Motion::G0;
+  if (m.has_feed && modal.feed <= 0)
+    raise(alarm_no::kFeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
+  m.feed = m.has_feed ? modal.feed : 0;
+  m.sar.kind = core::SarKind::None;
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+    arc(w, modal, from, plain, to);
+  } else if (!takeUpLength(w, modal, plain, to) && !sar) {
+    wcs_ = suppressed_ ? frames_.toWcs(bcs_) : to;
+    return false;  // zero-length block: no segment
+  }
+  m.tool_offset = applied_offset_;
+  m.plane = modal.plane;
+  compensationSettings(modal);
+  checkRange(plain);
+  sarRequest(w, modal, at);
+  core::Feedback back = next_.motion(m);
+  if (back.approach) approach_points_ = *back.approach;
+  if (back.end_point) to = *back.end_point;  // implicit retraction end point
+  bcs_ = toBcs(plain, to);
+  wcs_ = suppressed_ ? frames_.toWcs(bcs_) : to;
+  return true;
+}
+
+void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3& from, bool plain,
+                        Vec3& target) {
+  core::MotionBlock& m = m_;
+  PlaneAxes pa = planeAxes(modal.plane);
+  if (w.centre[pa.applicate])
+    raise(alarm_no::kCircleProgramming,
+          fmt::format("circle programming error: {} is not an interpolation parameter in the "
+                      "active plane",
+                      "IJK"[pa.applicate]));
+  const Mat3& l = frame().linear;
+  Vec3 ea, eo;
+  ea[pa.abscissa] = 1;
+  eo[pa.ordinate] = 1;
+  if (!plain && std::fabs(norm(l * ea) - norm(l * eo)) > 1e-9)
+    raise(alarm_no::kFrameNotAffine,
+          "a circle under different scale factors of the plane axes is an ellipse, which is not "
+          "modelled");
+  geom::ArcRequest req;
+  req.start = {from[pa.abscissa], from[pa.ordinate]};
+  req.ccw = m.motion == Motion::G3;
+  req.tol_const = data_.get(md_circle_const_);
+  req.tol_factor = data_.get(md_circle_factor_);
+  if (w.axis[pa.abscissa] || w.axis[pa.ordinate])
+    req.end = geom::Vec2{target[pa.abscissa], target[pa.ordinate]};
+  if (w.centre[pa.abscissa] || w.centre[pa.ordinate]) {
+    geom::Vec2 c;
+    int axes[2] = {pa.abscissa, pa.ordinate};
+    double* out[2] = {&c.a, &c.o};
+    for (int k = 0; k < 2; ++k) {
+      int ax = axes[k];
+      double v = w.centre[ax] ? toMm(modal, w.centre_value[ax]) : 0;
+      // I, J, K are incremental from the start point unless written =AC(..).
+      *out[k] = w.centre_mode[ax] == AxisMode::AC ? v : from[ax] + v;
+    }
+    req.centre = c;
+  }
+  if (w.cr) req.cr = toMm(modal, *w.cr);
+  if (w.ar) req.ar = *w.ar;
+  geom::ArcSolution sol = geom::solveArc(req);
+  target[pa.abscissa] = sol.end.a;
+  target[pa.ordinate] = sol.end.o;
+  m.end = target;
+  m.centre = from;
+  m.centre[pa.abscissa] = sol.centre.a;
+  m.centre[pa.ordinate] = sol.centre.o;
+  m.applicate = pa.applicate;
+  m.turns = w.turn.value_or(0);
+}
+
+NCOFFSET_STEP bool MotionBuilder::takeUpLength(const BlockWords& w, const ModalState& modal,
+                                               bool plain, const Vec3& target) {
+  core::MotionBlock& m = m_;
+  m.centre = {};
+  m.applicate = 2;
+  m.turns = 0;
+  // Tool length: each BCS axis takes up the length vector with the first linear block that
+  // moves it after the selection (W1 2.1, spec §2.6).
+  const Vec3 full = tools_.lengthVector(modal.plane);
+  const Vec3 before = applied_offset_;
+  if (plain) {
+    for (int i = 0; i < 3; ++i)
+      if (w.axis[i]) applied_offset_[i] = full[i];
+  } else {
+    const Mat3& l = frame().linear;
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i)
+        if (w.axis[i] && std::fabs(l.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
+          applied_offset_[k] = full[k];
+  }
+  const Vec3 moved = (toBcs(plain, target) + applied_offset_) - (bcs_ + before);
+  return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
+}
+
+NCOFFSET_STEP void MotionBuilder::compensationSettings(const ModalState& modal) {
+  core::TrcSettings& t = m_.trc;
+  t.mode = modal.trc;
+  t.radius = modal.offn + tools_.radius();
+  t.approach = modal.approach;
+  t.corner = modal.corner;
+  t.collision = modal.collision;
+  t.disc = modal.disc;
+  t.strategy = modal.trc_strategy;
+  t.corner_limit = data_.get(md_corner_limit_);
+  t.curve_insert_limit = data_.get(md_insert_limit_);
+  t.max_dummy_blocks = static_cast<int>(data_.get(md_dummy_blocks_));
+  t.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
+}
+
+NCOFFSET_STEP void MotionBuilder::checkRange(bool plain) const {
+  const core::MotionBlock& m = m_;
+  // Computed geometry must stay finite and within the machine's number range: a frame with a
+  // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
+  // The end point, and a circle's centre (a line has none).
+  const Vec3 checks[] = {toBcs(plain, m.end) + applied_offset_, toBcs(plain, m.centre)};
+  const int n_checks = m.motion == Motion::G2 || m.motion == Motion::G3 ? 2 : 1;
+  for (int c = 0; c < n_checks; ++c)
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& p = checks[c];
+      if (std::fabs(p[i]) <= 1e9) continue;  // the usual case: one comparison (false for NaN)
+      if (!std::isfinite(p[i]))
+        raise(alarm_no::kArithmetic,
+              "arithmetic error in part program: position is not a finite number");
+      raise(alarm_no::kValueRange,
+            fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i],
+                        "XYZ"[i]));
+    }
+}
+
+NCOFFSET_STEP void MotionBuilder::sarRequest(const BlockWords& w, const ModalState& modal,
+                                             const BlockContext& at) {
+  if (w.sar == core::SarKind::None) {
+    if (w.disr || w.discl || w.disrp || w.fad)
+      raise(alarm_no::kSyntaxError, "DISR, DISCL, DISRP and FAD only in a SAR block (G147..G348)");
+    return;
+  }
+  m_.sar = core::SarRequest{};
+  core::SarRequest& q = m_.sar;
+  q.kind = w.sar;
+  q.side = modal.sar_side;
+  q.infeed = modal.sar_infeed;
+  q.has_disr = w.disr.has_value();
+  q.disr = w.disr.value_or(0);
+  q.has_discl = w.discl.has_value();
+  q.discl = w.discl.value_or(0);
+  q.discl_ac = w.discl_ac;
+  q.has_disrp = w.disrp.has_value();
+  q.disrp = w.disrp.value_or(0);
+  q.disrp_ac = w.disrp_ac;
+  q.has_fad = w.fad.has_value();
+  q.fad = w.fad.value_or(0);
+  PlaneAxes pa = planeAxes(modal.plane);
+  q.plane_axis = w.axis[pa.abscissa] || w.axis[pa.ordinate];
+  q.any_axis = q.plane_axis || w.axis[pa.applicate];
+  q.f_programmed = w.f.has_value();
+  q.feed_value = modal.feed;
+  q.feed_before = at.feed_before;
+  q.rapid_before = at.motion_before == Motion::G0;
+  q.max_dummy_blocks = static_cast<int>(data_.get(md_sar_dummy_blocks_));
+}
+
+}  // namespace ncoffset::interp

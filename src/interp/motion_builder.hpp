@@ -1,0 +1,72 @@
+// The motion builder of the channel (PM-NC "Fundamentals": G0/G1/G2/G3, G90/G91, AC/IC,
+// G53/G153/SUPA): turns the collected words of a block into one core::MotionBlock (target
+// point, circle, tool length take-up, compensation settings, SAR request), checks it against the
+// machine's number range and hands it to the first stage. It owns the channel's position.
+#pragma once
+
+#include "core/stage.hpp"
+#include "interp/frame_state.hpp"
+#include "interp/machine_data.hpp"
+#include "interp/modal_state.hpp"
+#include "tool/tool_selection.hpp"
+
+namespace ncoffset::interp {
+
+// Where the block stands and what was modal before it (the SAR request needs both).
+struct BlockContext {
+  int line = 0;
+  int file = 0;
+  double feed_before = 0;             // the modal feed before the block
+  Motion motion_before = Motion::G0;  // the modal G0..G3 before the block
+};
+
+// G70/G700: inch values in mm.
+inline double toMm(const ModalState& modal, double v) {
+  return modal.units == Units::G70 || modal.units == Units::G700 ? v * 25.4 : v;
+}
+
+class MotionBuilder {
+ public:
+  MotionBuilder(core::Stage& next, const MachineData& data, const FrameState& frames,
+                const tool::ToolSelection& tools);
+
+  // Builds the block's motion and hands it on. False: a zero-length linear block (no segment).
+  bool build(const BlockWords& w, const ModalState& modal, const BlockContext& at);
+
+  // The last programmed point in the WCS ($P_EP) and the tool tip in the BCS.
+  Vec3 wcs() const { return wcs_; }
+  Vec3 bcs() const { return bcs_; }
+  // $P_APR, $P_AEP, $P_APDV as the smooth approach fed them back.
+  const core::ApproachPoints& approachPoints() const { return approach_points_; }
+
+ private:
+  Vec3 target(const BlockWords& w, const ModalState& modal, const Vec3& from) const;
+  // G2/G3: end point and centre by geom::solveArc (PM-NC "Circular interpolation").
+  void arc(const BlockWords& w, const ModalState& modal, const Vec3& from, bool plain,
+           Vec3& target);
+  // G0/G1: the tool length taken up by each axis the block moves (W1 2.1, spec §2.6). False
+  // when the block moves nowhere.
+  bool takeUpLength(const BlockWords& w, const ModalState& modal, bool plain, const Vec3& target);
+  void compensationSettings(const ModalState& modal);
+  void checkRange(bool plain) const;
+  void sarRequest(const BlockWords& w, const ModalState& modal, const BlockContext& at);
+  Vec3 toBcs(bool plain, const Vec3& p) const { return plain ? p : frame().apply(p); }
+  const Affine& frame() const { return suppressed_ ? kNoFrame.map() : frames_.map(); }
+
+  static const core::BlockFrame kNoFrame;
+  core::Stage& next_;
+  const MachineData& data_;
+  const FrameState& frames_;
+  const tool::ToolSelection& tools_;
+  // Machine data read per block, looked up once.
+  int md_circle_const_, md_circle_factor_, md_corner_limit_, md_insert_limit_, md_dummy_blocks_,
+      md_check_blocks_, md_sar_dummy_blocks_;
+  core::MotionBlock m_;      // the one block, reused: every member is set for each motion
+  bool suppressed_ = false;  // G53/G153/SUPA in the block being built
+  Vec3 applied_offset_;      // BCS length vector as taken up axis by axis by linear blocks
+  Vec3 wcs_;
+  Vec3 bcs_;
+  core::ApproachPoints approach_points_;
+};
+
+}  // namespace ncoffset::interp
