@@ -544,7 +544,7 @@ void Interpreter::finishBlock() {
     first_.blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
-    if (levels_.size() > 1)
+    if (flow_.depth() > 1)
       returnFromSubprogram();  // M2/M30 in a subprogram act like M17
     else
       endProgram();

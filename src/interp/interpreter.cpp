@@ -25,6 +25,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
       sink_(sink),
       eval_(*this),
       vars_(options.limits, static_cast<size_t>(data_.get("$MC_MM_NUM_R_PARAM"))),
+      flow_(options.limits),
       tools_(options.limits.max_tool_edges),
       motion_(first, data_, frames_, tools_) {
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
@@ -41,20 +42,23 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
 
 Interpreter::~Interpreter() = default;
 
-LoadedProgram& Interpreter::load(std::shared_ptr<lang::SourceFile> source) {
-  auto p = std::make_unique<LoadedProgram>();
-  p->file_id = static_cast<int>(files_.size());
-  p->source = std::move(source);
-  files_.push_back(std::move(p));
-  LoadedProgram& prog = *files_.back();
+template <typename F>
+decltype(auto) Interpreter::loading(F&& f) {
+  const size_t before = flow_.fileCount();
   try {
-    prog.index = std::make_unique<lang::ProgramIndex>(
-        *prog.source, options_.limits.max_control_depth, options_.limits.max_line_length);
+    return f();
   } catch (const AlarmError&) {
-    file_ = prog.file_id;  // the alarm belongs to this file
+    if (flow_.fileCount() > before) file_ = static_cast<int>(flow_.fileCount()) - 1;
     throw;
   }
-  return prog;
+}
+
+LoadedProgram& Interpreter::load(std::shared_ptr<lang::SourceFile> source) {
+  return loading([&]() -> LoadedProgram& { return flow_.load(std::move(source)); });
+}
+
+bool Interpreter::programExists(std::string_view name) {
+  return loading([&] { return flow_.find(name) != nullptr; });
 }
 
 SourceLoc Interpreter::alarmLoc(const AlarmError& e) const {
@@ -64,21 +68,18 @@ SourceLoc Interpreter::alarmLoc(const AlarmError& e) const {
 void Interpreter::run(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
   ended_ = false;
-  levels_.clear();
+  flow_.begin(program);
   vars_.beginRun();
-  ProgramLevel main;
-  main.program = &program;
-  levels_.push_back(std::move(main));
   std::string_view text;
   const size_t max_len = options_.limits.max_line_length;
   while (!ended_) {
-    ProgramLevel& lvl = levels_.back();
+    ProgramLevel& lvl = flow_.level();
     file_ = lvl.program->file_id;
-    line_pos_ = lvl.pos;
-    line_ = lvl.pos.line;
-    if (!lang::nextLine(lvl.program->source->text(), lvl.pos, text)) {
+    const bool more = flow_.nextLine(text, line_pos_);
+    line_ = line_pos_.line;
+    if (!more) {
       // End of file: a subprogram returns, the main program (or init file) ends.
-      if (levels_.size() > 1) {
+      if (flow_.depth() > 1) {
         returnFromSubprogram();
         continue;
       }
@@ -105,14 +106,14 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     first_.flush();  // the last compensated element ends on its normal
   }
   vars_.endRun(!init_file);
-  levels_.clear();
+  flow_.clear();
 }
 
 void Interpreter::executeBlock() {
   const lang::Block& b = block_;
   if (b.stmts.empty() && b.decls.empty()) return;  // empty, comment or label-only line
   words_.clear();
-  ProgramLevel& lvl = levels_.back();
+  ProgramLevel& lvl = flow_.level();
   bool jumped = false;
   for (size_t i = 0; i < b.stmts.size() && !jumped; ++i) {
     const Stmt& st = b.stmts[i];
@@ -146,24 +147,9 @@ void Interpreter::executeBlock() {
   if (!jumped) finishBlock();
 }
 
-const lang::ControlLink& Interpreter::link() const {
-  const lang::ControlLink* l = levels_.back().program->index->link(line_pos_.offset);
-  if (!l)
-    raise(alarm_no::kControlNesting,
-          "invalid nesting of control structures: statement must stand at the start of its block");
-  return *l;
-}
-
-void Interpreter::continueAfter(const TextPos& line) {
-  ProgramLevel& lvl = levels_.back();
-  lvl.pos = line;
-  std::string_view skip;
-  lang::nextLine(lvl.program->source->text(), lvl.pos, skip);
-}
-
 void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
   const lang::Block& b = block_;
-  ProgramLevel& lvl = levels_.back();
+  ProgramLevel& lvl = flow_.level();
   std::string_view kw = st.name;
   if (kw == "DEF") {
     if (!lvl.defs_allowed)
@@ -201,13 +187,13 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
     if (index != 0) raise(alarm_no::kControlNesting, "IF must stand at the start of its block");
     const auto& l = link();
     if (!cond) {
-      continueAfter(l.partner);  // after ELSE, or after ENDIF
+      flow_.continueAfter(l.partner);  // after ELSE, or after ENDIF
       jumped = true;
     }
     return;
   }
   if (kw == "ELSE") {
-    continueAfter(link().partner);  // the true branch ran: skip to after ENDIF
+    flow_.continueAfter(link().partner);  // the true branch ran: skip to after ENDIF
     jumped = true;
     return;
   }
@@ -218,7 +204,7 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
   if (kw == "WHILE") {
     const auto& l = link();
     if (!lang::toBool(eval_.eval(b, st.expr))) {
-      continueAfter(l.partner);
+      flow_.continueAfter(l.partner);
       jumped = true;
     }
     return;
@@ -243,7 +229,7 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
     double end = lang::toNumber(eval_.eval(b, st.expr2), "FOR end value");
     Value now = target.kind == NodeKind::RParam ? readR(target.number) : eval_.eval(b, st.target);
     if (lang::toNumber(now) > end && !lang::realEqual(lang::toNumber(now), end)) {
-      continueAfter(l.partner);
+      flow_.continueAfter(l.partner);
       jumped = true;
     }
     return;
@@ -258,13 +244,13 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
   if (kw == "UNTIL") {
     const auto& l = link();
     if (!lang::toBool(eval_.eval(b, st.expr))) {
-      continueAfter(l.partner);
+      flow_.continueAfter(l.partner);
       jumped = true;
     }
     return;
   }
   if (kw == "ENDLOOP") {
-    continueAfter(link().partner);
+    flow_.continueAfter(link().partner);
     jumped = true;
     return;
   }
@@ -300,11 +286,11 @@ void Interpreter::jump(const Stmt& st, bool quiet) {
 
 void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
   const Node& target = block_.node(target_node);
-  ProgramLevel& lvl = levels_.back();
-  LoadedProgram& prog = *lvl.program;
   const size_t here = line_pos_.offset;
-  const bool forward = kind == 1 || kind == 3 || kind == 4;
-  const bool backward = kind == 2 || kind == 3 || kind == 4;
+  JumpSearch search;
+  search.forward = kind == 1 || kind == 3 || kind == 4;
+  search.backward = kind == 2 || kind == 3 || kind == 4;
+  search.here_too = kind != 1 && kind != 2;
   std::string label;
   long long block_no = -1;
   if (target.kind == NodeKind::BlockNo) {
@@ -317,53 +303,8 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
       block_no = std::stoll(v.str.substr(1));
   }
   if (block_no >= 0) {
-    long long n = block_no;
-    auto it = prog.block_numbers.find(n);
-    if (it == prog.block_numbers.end()) {
-      // One scan of the file per distinct target number.
-      std::vector<TextPos> found;
-      TextPos p;
-      std::string_view text;
-      std::string norm;
-      while (true) {
-        TextPos at = p;
-        if (!lang::nextLine(prog.source->text(), p, text)) break;
-        if (!lang::normalizeLine(text.substr(0, 40), norm, nullptr)) continue;
-        size_t i = norm.find_first_not_of(' ');
-        if (i == std::string::npos) continue;
-        if (norm[i] == '/') {
-          ++i;
-          if (i < norm.size() && norm[i] >= '0' && norm[i] <= '9') ++i;
-          i = norm.find_first_not_of(' ', i);
-          if (i == std::string::npos) continue;
-        }
-        if ((norm[i] != 'N' && norm[i] != ':') || i + 1 >= norm.size()) continue;
-        size_t j = i + 1;
-        long long v = 0;
-        while (j < norm.size() && norm[j] >= '0' && norm[j] <= '9' && j - i < 19)
-          v = v * 10 + (norm[j++] - '0');
-        if (j > i + 1 && v == n) found.push_back(at);
-      }
-      it = prog.block_numbers.emplace(n, std::move(found)).first;
-    }
-    const TextPos* best = nullptr;
-    if (forward)
-      for (const auto& p : it->second)
-        if (p.offset > here) {
-          best = &p;
-          break;
-        }
-    if (!best && backward)
-      for (auto r = it->second.rbegin(); r != it->second.rend(); ++r)
-        if (r->offset < here) {
-          best = &*r;
-          break;
-        }
-    if (best) {
-      lvl.pos = *best;
-      return;
-    }
-    label = fmt::format("N{}", n);
+    if (flow_.jumpToBlockNumber(block_no, here, search)) return;
+    label = fmt::format("N{}", block_no);
   } else {
     if (target.kind == NodeKind::Name) {
       // A label, or a STRING variable holding one.
@@ -374,12 +315,7 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
       label = lang::toText(eval_.eval(block_, target_node));
     }
     for (auto& c : label) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    const TextPos* p = prog.index->label(label);
-    if (p && ((forward && p->offset > here) || (backward && p->offset < here) ||
-              (kind != 1 && kind != 2 && p->offset == here))) {
-      lvl.pos = *p;
-      return;
-    }
+    if (flow_.jumpToLabel(label, here, search)) return;
   }
   if (quiet) return;  // GOTOC: continue with the next block
   raise(alarm_no::kJumpNotFound, fmt::format("jump destination {} not found ({} search)", label,
@@ -393,66 +329,14 @@ void Interpreter::endProgram() {
 }
 
 void Interpreter::returnFromSubprogram() {
-  ProgramLevel& lvl = levels_.back();
-  if (lvl.repeat_left > 0) {
-    --lvl.repeat_left;
-    vars_.clearScope();
-    lvl.pos = TextPos{};
-    lvl.defs_allowed = true;
-    return;
-  }
-  vars_.popScope();
-  levels_.pop_back();
-}
-
-LoadedProgram* Interpreter::findProgram(std::string_view name) {
-  std::string key(name);
-  if (auto it = by_name_.find(key); it != by_name_.end()) return it->second;
-  if (!dir_scanned_) {
-    dir_scanned_ = true;
-    std::error_code ec;
-    std::filesystem::path dir = search_dir_.empty() ? std::filesystem::path(".") : search_dir_;
-    for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-      std::string fn = e.path().filename().string();
-      for (auto& c : fn) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-      dir_entries_.emplace(fn, search_dir_.empty() ? e.path().filename() : e.path());
-    }
-  }
-  const std::string candidates[] = {key + ".SPF", "_N_" + key + "_SPF", key + ".MPF",
-                                    "_N_" + key + "_MPF", key};
-  for (const auto& c : candidates) {
-    auto it = dir_entries_.find(c);
-    if (it == dir_entries_.end()) continue;
-    std::string err;
-    auto src = lang::SourceFile::load(it->second, &err);
-    if (!src) continue;
-    int saved_file = file_;
-    LoadedProgram* prog = &load(std::move(src));
-    file_ = saved_file;
-    by_name_.emplace(key, prog);
-    return prog;
-  }
-  return nullptr;
+  if (flow_.leave())
+    vars_.clearScope();  // the next pass starts without the variables of this one
+  else
+    vars_.popScope();
 }
 
 void Interpreter::callSubprogram(std::string_view name, long long repeat) {
-  if (static_cast<int>(levels_.size()) >= options_.limits.max_program_levels)
-    raise(alarm_no::kSubprogramDepth,
-          fmt::format("maximum subprogram level exceeded: {} program levels (--max-program-levels)",
-                      options_.limits.max_program_levels));
-  if (repeat < 1 || repeat > 9999)
-    raise(alarm_no::kValueRange,
-          fmt::format("value range exceeded: P{} (pass count 1..9999)", repeat));
-  LoadedProgram* prog = findProgram(name);
-  if (!prog)
-    raise(alarm_no::kProgramNotFound,
-          fmt::format(
-              "program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
-              name, name, name));
-  ProgramLevel lvl;
-  lvl.program = prog;
-  lvl.repeat_left = repeat - 1;
-  levels_.push_back(std::move(lvl));
+  loading([&] { flow_.call(name, repeat); });
   vars_.pushScope();
 }
 

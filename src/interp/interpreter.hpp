@@ -15,6 +15,7 @@
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
 #include "interp/motion_builder.hpp"
+#include "interp/program_flow.hpp"
 #include "interp/variable_store.hpp"
 #include "interp/variables.hpp"
 #include "lang/block.hpp"
@@ -28,22 +29,6 @@
 
 namespace ncoffset::interp {
 
-struct LoadedProgram {
-  std::shared_ptr<lang::SourceFile> source;
-  std::unique_ptr<lang::ProgramIndex> index;
-  int file_id = 0;
-  // Positions of block numbers used as jump targets, found on demand (N number -> lines).
-  std::unordered_map<long long, std::vector<lang::TextPos>> block_numbers;
-};
-
-// One program level: the main program (level 0) or an active subprogram.
-struct ProgramLevel {
-  LoadedProgram* program = nullptr;
-  lang::TextPos pos;  // next line to read
-  long long repeat_left = 0;
-  bool defs_allowed = true;
-};
-
 class Interpreter final : public lang::Environment {
  public:
   // `first`: the stage that takes the motion blocks (smooth approach); `sink`: MSG texts.
@@ -55,11 +40,9 @@ class Interpreter final : public lang::Environment {
   void run(LoadedProgram& program, bool init_file);
   LoadedProgram& load(std::shared_ptr<lang::SourceFile> source);
   SourceLoc alarmLoc(const AlarmError& e) const;
-  const std::string& fileName(int id) const {
-    return files_[static_cast<size_t>(id)]->source->name();
-  }
+  const std::string& fileName(int id) const { return flow_.fileName(id); }
   void writeVariablesJson(std::ostream& out) const;
-  void setSearchDir(std::filesystem::path dir) { search_dir_ = std::move(dir); }
+  void setSearchDir(std::filesystem::path dir) { flow_.setSearchDir(std::move(dir)); }
 
   // lang::Environment
   bool read(std::string_view name, std::span<const lang::Value> indices, bool indexed,
@@ -74,14 +57,15 @@ class Interpreter final : public lang::Environment {
   void executeControl(const lang::Stmt& st, size_t index, bool& jumped);
   void jump(const lang::Stmt& st, bool quiet);
   void jumpTo(int kind, int target_node, bool quiet);
-  void continueAfter(const lang::TextPos& line);
   void callSubprogram(std::string_view name, long long repeat);
   // Finds a subprogram file beside the main program (nullptr if there is none).
-  LoadedProgram* findProgram(std::string_view name);
-  bool programExists(std::string_view name) { return findProgram(name) != nullptr; }
+  bool programExists(std::string_view name);
+  // Runs `f`, which may load a program: an alarm of the new program's index belongs to it.
+  template <typename F>
+  decltype(auto) loading(F&& f);
   void returnFromSubprogram();
   void endProgram();
-  const lang::ControlLink& link() const;
+  const lang::ControlLink& link() const { return flow_.link(line_pos_.offset); }
   void define(const lang::Decl& d);
   void assign(const lang::Stmt& st);
   void store(const lang::Node& target, const lang::Value& v);
@@ -119,13 +103,7 @@ class Interpreter final : public lang::Environment {
   BlockWords words_;
   std::string call_name_;  // storage for an L<number> program name
 
-  std::vector<std::unique_ptr<LoadedProgram>> files_;
-  std::map<std::string, LoadedProgram*> by_name_;  // upper-case program name -> program
-  std::filesystem::path search_dir_;
-  std::map<std::string, std::filesystem::path> dir_entries_;  // upper-case file name -> path
-  bool dir_scanned_ = false;
-
-  std::vector<ProgramLevel> levels_;
+  ProgramFlow flow_;
 
   lang::Block block_;
   lang::TextPos line_pos_;  // start of the executing line
