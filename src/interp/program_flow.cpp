@@ -33,12 +33,6 @@ void ProgramFlow::begin(LoadedProgram& main) {
   levels_.push_back(level);
 }
 
-bool ProgramFlow::nextLine(std::string_view& text, TextPos& at) {
-  ProgramLevel& lvl = levels_.back();
-  at = lvl.pos;
-  return lang::nextLine(lvl.program->source->text(), lvl.pos, text);
-}
-
 LoadedProgram* ProgramFlow::find(std::string_view name) {
   std::string key(name);
   if (auto it = by_name_.find(key); it != by_name_.end()) return it->second;

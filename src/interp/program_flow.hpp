@@ -62,7 +62,11 @@ class ProgramFlow {
   size_t depth() const { return levels_.size(); }
   // Reads the next line of the current level: its text and where it starts. False at the end
   // of the file.
-  bool nextLine(std::string_view& text, lang::TextPos& at);
+  bool nextLine(std::string_view& text, lang::TextPos& at) {
+    ProgramLevel& lvl = levels_.back();
+    at = lvl.pos;
+    return lang::nextLine(lvl.program->source->text(), lvl.pos, text);
+  }
   // A subprogram call with pass count P (alarms 14012 too deep, 12160 pass count, 14011 not
   // found).
   void call(std::string_view name, long long repeat);
