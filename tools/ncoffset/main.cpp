@@ -6,6 +6,7 @@
 #include <fstream>
 #include <memory>
 
+#include "limit_option.hpp"
 #include "ncoffset/channel.hpp"
 #include "out/html_report.hpp"
 #include "out/mpf_writer.hpp"
@@ -67,32 +68,32 @@ int main(int argc, char** argv) {
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kMaxBlocksMax));
   app.add_option("--max-line-length", l.max_line_length, "characters per block (alarm 99001)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-expression-depth", l.max_expression_depth,
                  "expression nesting (alarm 99003)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-program-levels", l.max_program_levels,
                  "main program + subprogram levels (alarm 14012)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-control-depth", l.max_control_depth,
                  "nested control structures per level (alarm 12641)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-variables", l.max_variables, "user variables (alarm 99004)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-total-elements", l.max_total_elements,
                  "array elements of all variables together (alarm 99005)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-array-elements", l.max_array_elements, "elements per array (alarm 99005)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
