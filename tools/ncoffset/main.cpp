@@ -12,6 +12,7 @@
 #include "out/mpf_writer.hpp"
 #include "out/svg_writer.hpp"
 #include "out/writers.hpp"
+#include "terminal_text.hpp"
 
 namespace {
 
@@ -21,12 +22,12 @@ class MessagePrinter final : public ncoffset::PathSink {
   explicit MessagePrinter(ncoffset::PathSink& next) : next_(next) {}
   void segment(const ncoffset::Segment& s) override { next_.segment(s); }
   void message(const ncoffset::SourceLoc& where, const std::string& text) override {
-    std::fprintf(stderr, "%s:%d: message: %s\n", where.file.c_str(), where.line, text.c_str());
+    ncoffset::cli::printError(fmt::format("{}:{}: message: {}", where.file, where.line, text));
     next_.message(where, text);
   }
   void warning(const ncoffset::SourceLoc& where, int number, const std::string& text) override {
-    std::fprintf(stderr, "%s:%d: warning %d: %s\n", where.file.c_str(), where.line, number,
-                 text.c_str());
+    ncoffset::cli::printError(
+        fmt::format("{}:{}: warning {}: {}", where.file, where.line, number, text));
     next_.warning(where, number, text);
   }
   void programmed(const ncoffset::Segment& s) override { next_.programmed(s); }
@@ -99,7 +100,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    // Not app.exit(e): the message quotes the arguments, which are escaped like program text.
+    ncoffset::cli::printError(e.what());
+    ncoffset::cli::printError("Run with --help for more information.");
     return 1;
   }
   options.coords = coords == "wcs" ? ncoffset::CoordSystem::WCS : ncoffset::CoordSystem::MCS;
@@ -108,8 +111,8 @@ int main(int argc, char** argv) {
   if (!output.empty()) {
     out = std::fopen(output.c_str(), "wb");
     if (!out) {
-      std::fprintf(stderr, "ncoffset: %s: cannot write: %s\n", output.c_str(),
-                   std::strerror(errno));
+      ncoffset::cli::printError(
+          fmt::format("ncoffset: {}: cannot write: {}", output, std::strerror(errno)));
       return 1;
     }
   }
@@ -133,13 +136,13 @@ int main(int argc, char** argv) {
   auto report = [&](const ncoffset::RunResult& r) -> int {
     if (r.status == ncoffset::RunResult::Status::FileError) {
       writer->finish(nullptr);
-      std::fprintf(stderr, "ncoffset: %s\n", r.file_error.c_str());
+      ncoffset::cli::printError("ncoffset: " + r.file_error);
       return 1;
     }
     if (r.status == ncoffset::RunResult::Status::Alarm) {
       const auto& a = *r.alarm;
-      std::fprintf(stderr, "%s:%d: alarm %d: %s\n", a.where.file.c_str(), a.where.line, a.number,
-                   a.text.c_str());
+      ncoffset::cli::printError(
+          fmt::format("{}:{}: alarm {}: {}", a.where.file, a.where.line, a.number, a.text));
       return 2;
     }
     return 0;
@@ -155,7 +158,7 @@ int main(int argc, char** argv) {
   if (!vars.empty() && status != 1) {
     std::ofstream v(vars);
     if (!v) {
-      std::fprintf(stderr, "ncoffset: %s: cannot write\n", vars.c_str());
+      ncoffset::cli::printError(fmt::format("ncoffset: {}: cannot write", vars));
       return 1;
     }
     channel.writeVariablesJson(v);
