@@ -130,3 +130,28 @@ write("binary_garbage.MPF", garbage)
 # A subprogram of binary garbage, called by sub_garbage.MPF.
 rng = random.Random(7)
 write("GARBAGE_SUB.SPF", bytes([0x80]) + bytes(rng.randrange(256) for _ in range(1023)))
+
+# A tool name ($TC_TP2) of 200 characters, the STRING maximum: stored and selected by T="...".
+name200 = "T" + "A" * 199
+write("tool_name_200.MPF",
+      "; Checks: a tool name ($TC_TP2) of 200 characters, the longest STRING (docs/limits.md), is\n"
+      "; stored and selects its tool with T=\"...\" (line 7). Tool 1: length 10 ($TC_DP3), so\n"
+      "; the carrier reference point (MCS) is 10 mm above the tool tip once Z moves (line 8).\n"
+      "; Rows: line 6 X1 Z0; line 8 X2 Z10. Status 0.\n"
+      f"$TC_TP2[1]=\"{name200}\" $TC_DP1[1,1]=120 $TC_DP3[1,1]=10\n"
+      "G90 G1 X1 Z0 F100\n"
+      f"T=\"{name200}\" D1\n"
+      "G1 X2 Z0\n"
+      "M30\n")
+
+# A tool name of 300 characters: longer than any STRING, so the value range alarm 12160 of an
+# over-long string (issue 14, finding 10: it used to be accepted).
+write("tool_name_too_long.MPF",
+      "; Checks: a tool name ($TC_TP2) of 300 characters, beyond the 200 of any STRING\n"
+      "; (docs/limits.md): value range alarm 12160 at line 5, as for an over-long string value.\n"
+      "; It used to be stored and selectable. Row: line 4 X1. Status 2.\n"
+      "G90 G1 X1 F100\n"
+      f"$TC_TP2[1]=\"{'N' * 300}\"\n"
+      "G1 X2\n"
+      "M30\n")
+
