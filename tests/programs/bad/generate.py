@@ -155,3 +155,12 @@ write("tool_name_too_long.MPF",
       "G1 X2\n"
       "M30\n")
 
+# MSG text with terminal escape sequences (ESC, BEL, a C1 CSI) and UTF-8: on stderr the
+# control characters are written as \\xNN, the UTF-8 stays (issue 14, finding 10).
+write("msg_terminal_escape.MPF",
+      "; Checks: MSG texts with terminal control sequences (ESC [2J clears the screen, ESC ]0;\n"
+      "; sets the window title, BEL, the C1 CSI U+009B) reach stderr escaped as \\xNN; the\n"
+      "; UTF-8 umlaut stays. No alarm. Row: line 4 X1. Status 0.\n"
+      "G90 G1 X1 F100\n".encode() +
+      b'MSG("clear\x1b[2J title\x1b]0;owned\x07 csi\xc2\x9b31m Ma\xc3\x9f")\n'
+      b"M30\n")
