@@ -127,6 +127,13 @@ check("success: the variables written", read(d, "v.json").startswith(b"{"), read
 check("success: permissions kept", os.stat(target).st_mode & 0o777 == 0o640, oct(os.stat(target).st_mode))
 check("success: no temporary file", not leftovers(d), leftovers(d))
 
+# A target name near NAME_MAX still gets a temporary file name that fits beside it.
+long_name = "L" * 250 + ".csv"
+p = run(d, "P.MPF", "-o", long_name)
+check("a 254-byte target name: exit 0", p.returncode == 0, p.stderr)
+check("a 254-byte target name: written", read(d, long_name).startswith(b"line,motion,"))
+check("a 254-byte target name: no temporary file", not leftovers(d), leftovers(d))
+
 # An alarm: the path up to it is written, as before (exit 2), and the variables too.
 with open(os.path.join(d, "A.MPF"), "wb") as f:
     f.write(b"G90 G1 X1 F100\nR2=7\nR1=1/0\nX3\nM30\n")

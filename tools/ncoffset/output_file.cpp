@@ -58,8 +58,10 @@ bool OutputFile::openTemporary(const fs::path& real, const struct stat* existing
   fs::path dir = real.parent_path();
   for (int attempt = 0; attempt < 100; ++attempt) {
     // Hidden, unique per process and output; O_EXCL never reuses a name left by a killed run.
-    fs::path temp = dir / fmt::format(".{}.ncoffset-{}-{}.tmp", real.filename().string(),
-                                      static_cast<long>(::getpid()), counter++);
+    // The target's name is cut to 200 bytes so that the whole stays within NAME_MAX (255).
+    fs::path temp =
+        dir / fmt::format(".{}.ncoffset-{}-{}.tmp", real.filename().string().substr(0, 200),
+                          static_cast<long>(::getpid()), counter++);
     fd_ = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOCTTY | O_CLOEXEC, 0666);
     if (fd_ >= 0) {
       temp_ = temp;
