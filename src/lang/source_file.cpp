@@ -8,41 +8,72 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 namespace ncoffset::lang {
 
+namespace {
+
+// What a path that is not a regular file is, for the error message.
+const char* notRegularReason(mode_t mode) {
+  if (S_ISDIR(mode)) return "is a directory";
+  if (S_ISFIFO(mode)) return "not a regular file (a FIFO)";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "not a regular file (a device)";
+  if (S_ISSOCK(mode)) return "not a regular file (a socket)";
+  return "not a regular file";
+}
+
+// Reads the whole file from `fd` (when it cannot be mapped); false on a read error.
+bool readAll(int fd, std::string& out) {
+  char chunk[1 << 16];
+  for (;;) {
+    ssize_t n = ::read(fd, chunk, sizeof chunk);
+    if (n == 0) return true;
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return false;
+    out.append(chunk, static_cast<size_t>(n));
+  }
+}
+
+}  // namespace
+
 std::shared_ptr<SourceFile> SourceFile::load(const std::filesystem::path& path,
                                              std::string* error) {
+  auto fail = [error](const char* why) -> std::shared_ptr<SourceFile> {
+    if (error) *error = why;
+    return nullptr;
+  };
+  // Only regular files are opened: opening a FIFO blocks until a writer comes, and opening a
+  // device can have side effects. stat() first keeps them from being opened at all; O_NONBLOCK
+  // and the fstat() below cover a file swapped for a FIFO in between.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return fail(std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) return fail(notRegularReason(st.st_mode));
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) return fail(std::strerror(errno));
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    int saved = errno;
+    ::close(fd);
+    return fail(S_ISREG(st.st_mode) ? std::strerror(saved) : notRegularReason(st.st_mode));
+  }
   std::shared_ptr<SourceFile> f(new SourceFile());
   f->name_ = path.string();
   f->path_ = path;
-  int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) {
-    if (error) *error = std::strerror(errno);
-    return nullptr;
-  }
-  struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    if (error) *error = S_ISDIR(st.st_mode) ? "is a directory" : "not a regular file";
-    return nullptr;
-  }
-  if (st.st_size > 0) {
-    void* p = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
-    if (p != MAP_FAILED) {
-      f->map_ = p;
-      f->map_size_ = static_cast<size_t>(st.st_size);
-      f->text_ = std::string_view(static_cast<const char*>(p), f->map_size_);
-    } else {
-      // Fall back to reading (e.g. on file systems without mmap).
-      std::ifstream in(path, std::ios::binary);
-      std::ostringstream ss;
-      ss << in.rdbuf();
-      f->owned_ = ss.str();
-      f->text_ = f->owned_;
+  void* p = st.st_size > 0
+                ? ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0)
+                : MAP_FAILED;
+  if (p != MAP_FAILED) {
+    f->map_ = p;
+    f->map_size_ = static_cast<size_t>(st.st_size);
+    f->text_ = std::string_view(static_cast<const char*>(p), f->map_size_);
+  } else if (st.st_size > 0) {
+    // Fall back to reading (e.g. on file systems without mmap), from the descriptor already
+    // checked rather than by opening the path again.
+    if (!readAll(fd, f->owned_)) {
+      int saved = errno;
+      ::close(fd);
+      return fail(std::strerror(saved));
     }
+    f->text_ = f->owned_;
   }
   ::close(fd);
   return f;

@@ -10,7 +10,8 @@ namespace ncoffset::lang {
 
 class SourceFile {
  public:
-  // Loads a file; returns nullptr and sets `error` when it cannot be read.
+  // Loads a regular file; returns nullptr and sets `error` when it cannot be read or is not a
+  // regular file (a FIFO, a device or a directory is refused without blocking on it).
   static std::shared_ptr<SourceFile> load(const std::filesystem::path& path, std::string* error);
   static std::shared_ptr<SourceFile> fromString(std::string name, std::string text);
   ~SourceFile();

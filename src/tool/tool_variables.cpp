@@ -149,12 +149,21 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
   if (!parseToolVariable(name, idx, indexed, var)) return false;
   const std::string_view kind = var.kind;
   const int n = var.n, t = var.t, d = var.d;
+  if (kind == "TP" && n == 2) {
+    // The tool name is a STRING like any other: at most 200 characters (docs/limits.md), with
+    // the value range alarm of an over-long string value (variables.cpp).
+    std::string text = lang::toText(v);
+    if (text.size() > 200)
+      raise(alarm_no::kValueRange,
+            fmt::format("value range exceeded: string of {} characters does not fit STRING[200] "
+                        "{}[{}]",
+                        text.size(), name, t));
+    tools_.toolForWrite(t).name[2] = std::move(text);
+    return true;
+  }
   if (kind == "TP" || kind == "TPC") {
     Tool& tool = tools_.toolForWrite(t);
-    if (kind == "TP" && n == 2)
-      tool.name[2] = lang::toText(v);
-    else
-      (kind == "TP" ? tool.tp : tool.tpc)[n] = lang::toNumber(v, "tool parameter");
+    (kind == "TP" ? tool.tp : tool.tpc)[n] = lang::toNumber(v, "tool parameter");
     return true;
   }
   double x = lang::toNumber(v, "tool parameter");

@@ -3,14 +3,20 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <fstream>
 #include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
 
+#include "file_identity.hpp"
+#include "limit_option.hpp"
 #include "ncoffset/channel.hpp"
 #include "out/html_report.hpp"
 #include "out/mpf_writer.hpp"
 #include "out/svg_writer.hpp"
 #include "out/writers.hpp"
+#include "output_file.hpp"
+#include "terminal_text.hpp"
 
 namespace {
 
@@ -20,12 +26,12 @@ class MessagePrinter final : public ncoffset::PathSink {
   explicit MessagePrinter(ncoffset::PathSink& next) : next_(next) {}
   void segment(const ncoffset::Segment& s) override { next_.segment(s); }
   void message(const ncoffset::SourceLoc& where, const std::string& text) override {
-    std::fprintf(stderr, "%s:%d: message: %s\n", where.file.c_str(), where.line, text.c_str());
+    ncoffset::cli::printError(fmt::format("{}:{}: message: {}", where.file, where.line, text));
     next_.message(where, text);
   }
   void warning(const ncoffset::SourceLoc& where, int number, const std::string& text) override {
-    std::fprintf(stderr, "%s:%d: warning %d: %s\n", where.file.c_str(), where.line, number,
-                 text.c_str());
+    ncoffset::cli::printError(
+        fmt::format("{}:{}: warning {}: {}", where.file, where.line, number, text));
     next_.warning(where, number, text);
   }
   void programmed(const ncoffset::Segment& s) override { next_.programmed(s); }
@@ -45,119 +51,148 @@ std::string extensionFormat(const std::string& path) {
   return "csv";
 }
 
+// What the command line asks for, besides the run options.
+struct Args {
+  std::string program, output, format, coords = "mcs", view = "xy", vars;
+  std::vector<std::string> inits;
+};
+
+std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
+                                               const ncoffset::Channel& channel) {
+  auto names = [&channel](int i) -> const std::string& { return channel.fileName(i); };
+  if (a.format == "jsonl") return std::make_unique<ncoffset::out::JsonLinesWriter>(out, names);
+  if (a.format == "svg")
+    return std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view));
+  if (a.format == "html")
+    return std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(a.view),
+                                                       a.program, a.coords);
+  if (a.format == "mpf") return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names);
+  return std::make_unique<ncoffset::out::CsvWriter>(out);
+}
+
+// Runs the init files and the program: exit status 0, 1 (file error) or 2 (alarm).
+int runAll(const Args& a, ncoffset::Channel& channel, ncoffset::PathSink& writer) {
+  MessagePrinter sink(writer);
+  auto report = [&](const ncoffset::RunResult& r) -> int {
+    if (r.status == ncoffset::RunResult::Status::FileError) {
+      writer.finish(nullptr);
+      ncoffset::cli::printError("ncoffset: " + r.file_error);
+      return 1;
+    }
+    if (r.status == ncoffset::RunResult::Status::Alarm) {
+      const auto& al = *r.alarm;
+      ncoffset::cli::printError(
+          fmt::format("{}:{}: alarm {}: {}", al.where.file, al.where.line, al.number, al.text));
+      return 2;
+    }
+    return 0;
+  };
+  for (const auto& init : a.inits)
+    if (int status = report(channel.runInit(init, sink))) return status;
+  return report(channel.runProgram(a.program, sink));
+}
+
+// An output must be neither an input nor the other output: it would be destroyed (the program
+// truncated before it is read) or overwritten.
+bool outputsDistinct(const Args& a) {
+  std::vector<ncoffset::cli::NamedPath> inputs{{"the program", a.program}};
+  for (const auto& init : a.inits) inputs.push_back({"the --init file", init});
+  std::vector<ncoffset::cli::NamedPath> outputs;
+  if (!a.output.empty()) outputs.push_back({"-o", a.output});
+  if (!a.vars.empty()) outputs.push_back({"--vars", a.vars});
+  std::string clash = ncoffset::cli::outputClash(inputs, outputs);
+  if (!clash.empty()) ncoffset::cli::printError(clash);
+  return clash.empty();
+}
+
+// Runs with safe outputs (output_file.hpp): the exit status, 1 also when an output cannot be
+// written completely (its target is then left as it was).
+int run(const Args& a, const ncoffset::RunOptions& options) {
+  if (!outputsDistinct(a)) return 1;
+  std::string error;
+  ncoffset::cli::OutputFile out, vars;
+  if (!out.open(a.output, error) || (!a.vars.empty() && !vars.open(a.vars, error))) {
+    ncoffset::cli::printError(error);
+    return 1;
+  }
+  ncoffset::Channel channel(options);
+  // The writer flushes its last lines into the stream when it goes.
+  int status = runAll(a, channel, *makeWriter(a, out.stream(), channel));
+  bool ok = out.close(error);
+  bool with_vars = ok && !a.vars.empty() && status != 1;
+  if (with_vars) {
+    ncoffset::cli::StdioStreamBuf buf(vars.stream());
+    std::ostream json(&buf);
+    channel.writeVariablesJson(json);
+    ok = vars.close(error);
+  }
+  // Both outputs are complete before either replaces its target.
+  ok = ok && out.publish(error) && (!with_vars || vars.publish(error));
+  if (!ok) {
+    ncoffset::cli::printError(error);
+    return 1;
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"ncoffset: SINUMERIK 840D sl tool offsets (W1) outside the control"};
-  std::string program, output, format, coords = "mcs", view = "xy", vars;
-  std::vector<std::string> inits;
+  Args a;
   ncoffset::RunOptions options;
-  app.add_option("PROGRAM", program, "part program (.MPF)")->required();
-  app.add_option("--init", inits, "init file run before PROGRAM (repeatable, in order)")
+  app.add_option("PROGRAM", a.program, "part program (.MPF)")->required();
+  app.add_option("--init", a.inits, "init file run before PROGRAM (repeatable, in order)")
       ->allow_extra_args(false);  // one file per --init, so `--init A PROGRAM` works
-  app.add_option("-o,--output", output, "output file (default: stdout)");
-  app.add_option("--format", format,
+  app.add_option("-o,--output", a.output, "output file (default: stdout)");
+  app.add_option("--format", a.format,
                  "csv | jsonl | svg | html | mpf (default: from the output's extension, else csv)")
       ->check(CLI::IsMember({"csv", "jsonl", "svg", "html", "mpf"}));
-  app.add_option("--coords", coords, "mcs (carrier reference point, default) | wcs (tool tip)")
+  app.add_option("--coords", a.coords, "mcs (carrier reference point, default) | wcs (tool tip)")
       ->check(CLI::IsMember({"mcs", "wcs"}));
-  app.add_option("--view", view, "svg: plane drawn: xy (G17, default) | zx (G18) | yz (G19)")
+  app.add_option("--view", a.view, "svg: plane drawn: xy (G17, default) | zx (G18) | yz (G19)")
       ->check(CLI::IsMember({"xy", "zx", "yz"}));
-  app.add_option("--vars", vars, "write R parameters and user variables as JSON");
+  app.add_option("--vars", a.vars, "write R parameters and user variables as JSON");
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kMaxBlocksMax));
   app.add_option("--max-line-length", l.max_line_length, "characters per block (alarm 99001)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-expression-depth", l.max_expression_depth,
                  "expression nesting (alarm 99003)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-program-levels", l.max_program_levels,
                  "main program + subprogram levels (alarm 14012)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-control-depth", l.max_control_depth,
                  "nested control structures per level (alarm 12641)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-variables", l.max_variables, "user variables (alarm 99004)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-total-elements", l.max_total_elements,
                  "array elements of all variables together (alarm 99005)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   app.add_option("--max-array-elements", l.max_array_elements, "elements per array (alarm 99005)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    // Not app.exit(e): the message quotes the arguments, which are escaped like program text.
+    ncoffset::cli::printError(e.what());
+    ncoffset::cli::printError("Run with --help for more information.");
     return 1;
   }
-  options.coords = coords == "wcs" ? ncoffset::CoordSystem::WCS : ncoffset::CoordSystem::MCS;
-  if (format.empty()) format = output.empty() ? "csv" : extensionFormat(output);
-  std::FILE* out = stdout;
-  if (!output.empty()) {
-    out = std::fopen(output.c_str(), "wb");
-    if (!out) {
-      std::fprintf(stderr, "ncoffset: %s: cannot write: %s\n", output.c_str(),
-                   std::strerror(errno));
-      return 1;
-    }
-  }
-  ncoffset::Channel channel(options);
-  std::unique_ptr<ncoffset::PathSink> writer;
-  if (format == "jsonl")
-    writer = std::make_unique<ncoffset::out::JsonLinesWriter>(
-        out, [&channel](int i) -> const std::string& { return channel.fileName(i); });
-  else if (format == "svg")
-    writer = std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(view));
-  else if (format == "html")
-    writer = std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(view),
-                                                         program, coords);
-  else if (format == "mpf")
-    writer = std::make_unique<ncoffset::out::MpfWriter>(
-        out, coords, [&channel](int i) -> const std::string& { return channel.fileName(i); });
-  else
-    writer = std::make_unique<ncoffset::out::CsvWriter>(out);
-  MessagePrinter sink(*writer);
-
-  auto report = [&](const ncoffset::RunResult& r) -> int {
-    if (r.status == ncoffset::RunResult::Status::FileError) {
-      writer->finish(nullptr);
-      std::fprintf(stderr, "ncoffset: %s\n", r.file_error.c_str());
-      return 1;
-    }
-    if (r.status == ncoffset::RunResult::Status::Alarm) {
-      const auto& a = *r.alarm;
-      std::fprintf(stderr, "%s:%d: alarm %d: %s\n", a.where.file.c_str(), a.where.line, a.number,
-                   a.text.c_str());
-      return 2;
-    }
-    return 0;
-  };
-  int status = 0;
-  for (const auto& init : inits) {
-    status = report(channel.runInit(init, sink));
-    if (status) break;
-  }
-  if (!status) status = report(channel.runProgram(program, sink));
-  writer.reset();
-  if (out != stdout) std::fclose(out);
-  if (!vars.empty() && status != 1) {
-    std::ofstream v(vars);
-    if (!v) {
-      std::fprintf(stderr, "ncoffset: %s: cannot write\n", vars.c_str());
-      return 1;
-    }
-    channel.writeVariablesJson(v);
-  }
-  return status;
+  options.coords = a.coords == "wcs" ? ncoffset::CoordSystem::WCS : ncoffset::CoordSystem::MCS;
+  if (a.format.empty()) a.format = a.output.empty() ? "csv" : extensionFormat(a.output);
+  return run(a, options);
 }

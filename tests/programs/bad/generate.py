@@ -130,3 +130,37 @@ write("binary_garbage.MPF", garbage)
 # A subprogram of binary garbage, called by sub_garbage.MPF.
 rng = random.Random(7)
 write("GARBAGE_SUB.SPF", bytes([0x80]) + bytes(rng.randrange(256) for _ in range(1023)))
+
+# A tool name ($TC_TP2) of 200 characters, the STRING maximum: stored and selected by T="...".
+name200 = "T" + "A" * 199
+write("tool_name_200.MPF",
+      "; Checks: a tool name ($TC_TP2) of 200 characters, the longest STRING (docs/limits.md), is\n"
+      "; stored and selects its tool with T=\"...\" (line 7). Tool 1: length 10 ($TC_DP3), so\n"
+      "; the carrier reference point (MCS) is 10 mm above the tool tip once Z moves (line 8).\n"
+      "; Rows: line 6 X1 Z0; line 8 X2 Z10. Status 0.\n"
+      f"$TC_TP2[1]=\"{name200}\" $TC_DP1[1,1]=120 $TC_DP3[1,1]=10\n"
+      "G90 G1 X1 Z0 F100\n"
+      f"T=\"{name200}\" D1\n"
+      "G1 X2 Z0\n"
+      "M30\n")
+
+# A tool name of 300 characters: longer than any STRING, so the value range alarm 12160 of an
+# over-long string (issue 14, finding 10: it used to be accepted).
+write("tool_name_too_long.MPF",
+      "; Checks: a tool name ($TC_TP2) of 300 characters, beyond the 200 of any STRING\n"
+      "; (docs/limits.md): value range alarm 12160 at line 5, as for an over-long string value.\n"
+      "; It used to be stored and selectable. Row: line 4 X1. Status 2.\n"
+      "G90 G1 X1 F100\n"
+      f"$TC_TP2[1]=\"{'N' * 300}\"\n"
+      "G1 X2\n"
+      "M30\n")
+
+# MSG text with terminal escape sequences (ESC, BEL, a C1 CSI) and UTF-8: on stderr the
+# control characters are written as \\xNN, the UTF-8 stays (issue 14, finding 10).
+write("msg_terminal_escape.MPF",
+      "; Checks: MSG texts with terminal control sequences (ESC [2J clears the screen, ESC ]0;\n"
+      "; sets the window title, BEL, the C1 CSI U+009B) reach stderr escaped as \\xNN; the\n"
+      "; UTF-8 umlaut stays. No alarm. Row: line 4 X1. Status 0.\n"
+      "G90 G1 X1 F100\n".encode() +
+      b'MSG("clear\x1b[2J title\x1b]0;owned\x07 csi\xc2\x9b31m Ma\xc3\x9f")\n'
+      b"M30\n")
