@@ -55,6 +55,10 @@ class Interpreter final : public lang::Environment {
   // --- program flow (interpreter.cpp) ---
   void executeBlock();
   void executeControl(const lang::Stmt& st, size_t index, bool& jumped);
+  // control_statements.cpp
+  void ifStatement(const lang::Stmt& st, size_t index, bool& jumped);
+  bool loopStatement(const lang::Stmt& st, bool& jumped);
+  void caseStatement(const lang::Stmt& st, size_t index, bool& jumped);
   void jump(const lang::Stmt& st, bool quiet);
   void jumpTo(int kind, int target_node, bool quiet);
   void callSubprogram(std::string_view name, long long repeat);
@@ -72,8 +76,18 @@ class Interpreter final : public lang::Environment {
 
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
+  double wordValue(const lang::Stmt& st);
+  void letterWord(const lang::Stmt& st);
+  void programWord(char c, const lang::Stmt& st);
+  void extendedWord(const lang::Stmt& st);
+  void sarWord(const lang::Stmt& st);
   void namedWord(const lang::Stmt& st);
   void gCode(int code);
+  // gCode() by G groups: true when the group knows `g`.
+  bool gMotionPlaneFrame(int g);
+  bool gCompensation(int g);
+  bool gUnitsAndFeed(int g);
+  void gNotModelled(int g);
   void setSar(core::SarKind kind);
   void finishBlock();
   void doFrameCommand();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,7 +42,7 @@ class MachineData {
   // Throws 12550 / 12160 / 99013.
   void set(int id, double value);
   const DataSpec& spec(int id) const;
-  static const std::vector<DataSpec>& table();
+  static std::span<const DataSpec> table();
 
  private:
   // The value as stored (rounded for integer data); throws 12160 / 99013 when not allowed.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/inline_step.hpp"
 #include "geom/arc.hpp"
 #include "ncoffset/alarm.hpp"
 
@@ -12,10 +13,6 @@ namespace ncoffset::interp {
 using lang::AxisMode;
 
 const core::BlockFrame MotionBuilder::kNoFrame;
-
-// The steps of build() are functions of their own for reading; inlined into it, as the one
-// function they once were, since build() runs for every motion block (docs/performance.md).
-#define NCOFFSET_STEP [[gnu::always_inline]] inline
 
 MotionBuilder::MotionBuilder(core::Stage& next, const MachineData& data, const FrameState& frames,
                              const tool::ToolSelection& tools)
@@ -31,8 +28,8 @@ MotionBuilder::MotionBuilder(core::Stage& next, const MachineData& data, const F
       md_check_blocks_(data.find("$MC_CUTCOM_MAXNUM_CHECK_BLOCKS")),
       md_sar_dummy_blocks_(data.find("$MC_WAB_MAXNUM_DUMMY_BLOCKS")) {}
 
-NCOFFSET_STEP Vec3 MotionBuilder::target(const BlockWords& w, const ModalState& modal,
-                                         const Vec3& from) const {
+NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const ModalState& modal,
+                                                const Vec3& from) const {
   Vec3 target = from;
   for (int i = 0; i < 3; ++i) {
     if (!w.axis[i]) continue;
@@ -140,8 +137,8 @@ void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3
   m.turns = w.turn.value_or(0);
 }
 
-NCOFFSET_STEP bool MotionBuilder::takeUpLength(const BlockWords& w, const ModalState& modal,
-                                               bool plain, const Vec3& target) {
+NCOFFSET_INLINE_STEP bool MotionBuilder::takeUpLength(const BlockWords& w, const ModalState& modal,
+                                                      bool plain, const Vec3& target) {
   core::MotionBlock& m = m_;
   m.centre = {};
   m.applicate = 2;
@@ -164,7 +161,7 @@ NCOFFSET_STEP bool MotionBuilder::takeUpLength(const BlockWords& w, const ModalS
   return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
 }
 
-NCOFFSET_STEP void MotionBuilder::compensationSettings(const ModalState& modal) {
+NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& modal) {
   core::TrcSettings& t = m_.trc;
   t.mode = modal.trc;
   t.radius = modal.offn + tools_.radius();
@@ -179,7 +176,7 @@ NCOFFSET_STEP void MotionBuilder::compensationSettings(const ModalState& modal) 
   t.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
 }
 
-NCOFFSET_STEP void MotionBuilder::checkRange(bool plain) const {
+NCOFFSET_INLINE_STEP void MotionBuilder::checkRange(bool plain) const {
   const core::MotionBlock& m = m_;
   // Computed geometry must stay finite and within the machine's number range: a frame with a
   // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
@@ -199,8 +196,8 @@ NCOFFSET_STEP void MotionBuilder::checkRange(bool plain) const {
     }
 }
 
-NCOFFSET_STEP void MotionBuilder::sarRequest(const BlockWords& w, const ModalState& modal,
-                                             const BlockContext& at) {
+NCOFFSET_INLINE_STEP void MotionBuilder::sarRequest(const BlockWords& w, const ModalState& modal,
+                                                    const BlockContext& at) {
   if (w.sar == core::SarKind::None) {
     if (w.disr || w.discl || w.disrp || w.fad)
       raise(alarm_no::kSyntaxError, "DISR, DISCL, DISRP and FAD only in a SAR block (G147..G348)");
