@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages ncoffset builds and tests with (only those that are missing).
 set -euo pipefail
-packages=(cmake ninja-build g++ clang-14 libclang-rt-14-dev libfmt-dev libcli11-dev libgtest-dev
+packages=(cmake ninja-build g++ clang-14 clang-format-14 libclang-rt-14-dev libfmt-dev libcli11-dev libgtest-dev
           libgmock-dev libbenchmark-dev python3)
 missing=()
 for p in "${packages[@]}"; do
