@@ -19,7 +19,6 @@ using geom::Vec2;
 
 namespace {
 
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
 constexpr double kEps = 1e-9;
 // The index of a block that never comes (for checkOpen when the window is flushed).
 constexpr long kNoLaterBlock = std::numeric_limits<long>::max() / 2;
@@ -29,38 +28,6 @@ constexpr double kDiscTolerance = 1e-3;
 [[noreturn]] void notModelled(const std::string& what) {
   raise(alarm_no::kNotModelled,
         fmt::format("{} is not modelled by ncoffset yet (tool radius compensation)", what));
-}
-
-// The tangent point on the circle about `c` (radius r) of a line through `p` along which the
-// tool keeps `c` on its right (s > 0, G41) or left (s < 0, G42): travelling p -> T on approach,
-// T -> p on retraction (details Q2). nullopt when p lies inside the circle.
-std::optional<Vec2> tangentPoint(Vec2 p, Vec2 c, double r, double s, bool approach) {
-  Vec2 v = p - c;
-  double d = geom::length(v);
-  if (d <= r + kEps) return std::nullopt;
-  double phi = std::atan2(v.o, v.a), alpha = std::acos(r / d);
-  for (double ang : {phi + alpha, phi - alpha}) {
-    Vec2 t{c.a + r * std::cos(ang), c.o + r * std::sin(ang)};
-    Vec2 dir = approach ? t - p : p - t;
-    double sidedness = geom::cross(dir, c - (approach ? p : t));
-    if (s * sidedness < 0) return t;
-  }
-  return std::nullopt;
-}
-
-Vec2 unit(Vec2 v) {
-  double l = geom::length(v);
-  return l > 0 ? (1.0 / l) * v : Vec2{1, 0};
-}
-
-// A full circle about c (radius r) as an element: every point of it has a parameter in [0, 1].
-Element fullCircle(Vec2 c, double r) {
-  Element e;
-  e.arc = true;
-  e.c = c;
-  e.p0 = e.p1 = {c.a + r, c.o};
-  e.ccw = true;
-  return e;
 }
 
 [[noreturn]] void collision(int line, int check_blocks) {
@@ -402,7 +369,7 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   }
   // Outside corner (details Q3/Q4): G450 circle unless flatter than MD20230; G451 intersection
   // unless the contour angle reaches MD20210.
-  const double angle = reversal ? 180.0 : std::acos(std::fmax(-1.0, std::fmin(1.0, d))) * kDeg;
+  const double angle = reversal ? 180.0 : geom::angleDeg(t1, t2);
   const core::TrcSettings& t = next.block.trc;
   bool circle = t.corner == CornerMode::TransitionCircle ? !(angle < t.curve_insert_limit)
                                                          : angle >= t.corner_limit;
@@ -474,9 +441,9 @@ std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(
     if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) continue;
     // Like an inside corner: the later element turns towards the compensation side.
     // (With an extension the approach becomes the straight line to the point.)
-    const Vec2 t1 = extension    ? unit(x.p - c.compensated.p0)
+    const Vec2 t1 = extension    ? geom::unit(x.p - c.compensated.p0)
                     : target.arc ? geom::tangentAt(target, x.p)
-                                 : unit(target.p1 - target.p0);
+                                 : geom::unit(target.p1 - target.p0);
     if (side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9) continue;
     if (!best || x.u2 < best->u2) best = x;
   }
@@ -517,7 +484,7 @@ void RadiusCompensation::bridge(Piece& next, bool needed) {
         (c.strategy == TrcStrategy::G461 || c.strategy == TrcStrategy::G462)) {
       Element extension;
       if (c.strategy == TrcStrategy::G461) {
-        extension = fullCircle(c.programmed.p1, std::fabs(next.r0));
+        extension = geom::fullCircle(c.programmed.p1, std::fabs(next.r0));
       } else {
         // G462: the first element's equidistant extended backwards from the approach point
         // along its start tangent, the mirror image of the retraction's extension (details Q7).
@@ -604,7 +571,7 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     // earlier element ends that element and starts the retraction (W1 2.4.10, details Q7).
     Element ext;
     if (m.trc.strategy == TrcStrategy::G461) {
-      ext = fullCircle(pe, std::fabs(last.r1));
+      ext = geom::fullCircle(pe, std::fabs(last.r1));
     } else {
       ext.p0 = last.raw.p1;
       ext.p1 = last.raw.p1 + last.programmed.endTangent();
@@ -655,7 +622,7 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
   const Vec2 p0 = approach.programmed.p0;
   const Vec2 p1 = first.programmed.p0;
   const double r = std::fabs(settings_.radius), s = first.side;
-  std::optional<Vec2> t = tangentPoint(p0, p1, r, s, true);
+  std::optional<Vec2> t = geom::tangentPoint(p0, p1, r, s, true);
   if (!t)
     throw AlarmError(
         10755,
@@ -664,10 +631,8 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
   Element line;
   line.p0 = p0;
   line.p1 = *t;
-  const Vec2 dir = unit(*t - p0);
-  const double angle =
-      std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(dir, first.programmed.startTangent())))) *
-      kDeg;
+  const Vec2 dir = geom::unit(*t - p0);
+  const double angle = geom::angleDeg(dir, first.programmed.startTangent());
   if (settings_.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
     std::optional<geom::Crossing> best;
     for (const auto& x : geom::intersect(line, first.compensated))
@@ -699,7 +664,7 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   const Vec2 pe = last.programmed.p1;
   const Vec2 p2 = toElement(m).p1;
   const double r = std::fabs(last.r1), s = last.side;
-  std::optional<Vec2> t = tangentPoint(p2, pe, r, s, false);
+  std::optional<Vec2> t = geom::tangentPoint(p2, pe, r, s, false);
   if (!t)
     raise(10756,
           "deactivation of tool radius compensation via KONT not possible at programmed end point");
@@ -707,10 +672,8 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   line.p0 = *t;
   line.p1 = p2;
   PlaneAxes pa = planeAxes(m.plane);
-  const Vec2 dir = unit(p2 - *t);
-  const double angle =
-      std::acos(std::fmax(-1.0, std::fmin(1.0, geom::dot(last.programmed.endTangent(), dir)))) *
-      kDeg;
+  const Vec2 dir = geom::unit(p2 - *t);
+  const double angle = geom::angleDeg(last.programmed.endTangent(), dir);
   if (m.trc.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
     std::optional<geom::Crossing> best;
     for (const auto& x : geom::intersect(last.compensated, line))
