@@ -251,14 +251,15 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
         kontApproach(approach, first);
       } else if (geom::length(approach.compensated.p1 - approach.compensated.p0) > kEps) {
         // NORM: one straight line to the normal point of the first element (details Q1); if it
-        // cuts the first equidistant earlier, the intersection replaces that point (G460).
-        double best = 2;
-        for (const auto& x : geom::intersect(approach.compensated, first.compensated))
-          if (x.u1 > kEps && x.u1 < 1 - 1e-9 && x.u2 > -kEps && x.u2 < 1 + kEps && x.u1 < best) {
-            best = x.u1;
-            approach.compensated.p1 = x.p;
-          }
-        if (best < 2) first.compensated.p0 = approach.compensated.p1;
+        // cuts the first equidistant earlier, the intersection nearest the start of the line
+        // replaces that point (G460).
+        auto best = geom::nearestCrossing(
+            approach.compensated, first.compensated,
+            [](const geom::Crossing& x) {
+              return x.u1 > kEps && x.u1 < 1 - 1e-9 && x.u2 > -kEps && x.u2 < 1 + kEps;
+            },
+            [](const geom::Crossing& x) { return x.u1; });
+        if (best) approach.compensated.p1 = first.compensated.p0 = best->p;
       }
       approach.raw = approach.compensated;
       approach.box = geom::Box(approach.raw);
@@ -341,11 +342,12 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   if (inside) {
     // Inside corner: both elements end at the intersection of their equidistants; of several,
     // the one nearest the start of the next block (W1 2.4.3). None: the look-ahead decides.
-    std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(e1, e2))
-      if (x.u1 > -kEps && x.u1 < 1 + kEps && x.u2 > -kEps && x.u2 < 1 + kEps &&
-          (!best || x.u2 < best->u2))
-        best = x;
+    auto best = geom::nearestCrossing(
+        e1, e2,
+        [](const geom::Crossing& x) {
+          return x.u1 > -kEps && x.u1 < 1 + kEps && x.u2 > -kEps && x.u2 < 1 + kEps;
+        },
+        [](const geom::Crossing& x) { return x.u2; });
     if (!best) {
       next.open_before = true;
       return;
@@ -357,11 +359,12 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   // elements (an arc bending back over its neighbour): the tool cannot pass the crossing
   // without cutting into the other element, so it is treated like an inside corner [D].
   if (cur.programmed.arc || next.programmed.arc) {
-    std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(e1, e2))
-      if (x.u1 > kEps && x.u1 < 1 - kEps && x.u2 > kEps && x.u2 < 1 - kEps &&
-          (!best || x.u2 < best->u2))
-        best = x;
+    auto best = geom::nearestCrossing(
+        e1, e2,
+        [](const geom::Crossing& x) {
+          return x.u1 > kEps && x.u1 < 1 - kEps && x.u2 > kEps && x.u2 < 1 - kEps;
+        },
+        [](const geom::Crossing& x) { return x.u2; });
     if (best) {
       cur.compensated.p1 = next.compensated.p0 = best->p;
       return;
@@ -374,11 +377,10 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   bool circle = t.corner == CornerMode::TransitionCircle ? !(angle < t.curve_insert_limit)
                                                          : angle >= t.corner_limit;
   if (!circle) {
-    std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(e1, e2))
-      if (x.u1 > 1 - kEps && x.u2 < kEps &&
-          (!best || geom::length(x.p - p) < geom::length(best->p - p)))
-        best = x;
+    // The intersection of the extended equidistants nearest the corner point.
+    auto best = geom::nearestCrossing(
+        e1, e2, [](const geom::Crossing& x) { return x.u1 > 1 - kEps && x.u2 < kEps; },
+        [&p](const geom::Crossing& x) { return geom::length(x.p - p); });
     if (best) {
       cur.compensated.p1 = next.compensated.p0 = best->p;
       return;
@@ -434,20 +436,19 @@ void RadiusCompensation::transition(std::vector<MotionBlock>& out, const MotionB
 
 std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(
     const Piece& c, const Element& target, bool extension, const Element& later, double side) {
-  std::optional<geom::Crossing> best;
-  for (const auto& x : geom::intersect(target, later)) {
+  auto accept = [&](const geom::Crossing& x) {
     const bool on_target =
         extension ? (!target.arc ? x.u1 > -kEps : true) : x.u1 > kEps && x.u1 < 1 - 1e-9;
-    if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) continue;
+    if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) return false;
     // Like an inside corner: the later element turns towards the compensation side.
     // (With an extension the approach becomes the straight line to the point.)
     const Vec2 t1 = extension    ? geom::unit(x.p - c.compensated.p0)
                     : target.arc ? geom::tangentAt(target, x.p)
                                  : geom::unit(target.p1 - target.p0);
-    if (side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9) continue;
-    if (!best || x.u2 < best->u2) best = x;
-  }
-  return best;
+    return !(side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9);
+  };
+  // Nearest the start of the later element.
+  return geom::nearestCrossing(target, later, accept, [](const geom::Crossing& x) { return x.u2; });
 }
 
 bool RadiusCompensation::anyOpen() const {
@@ -582,11 +583,13 @@ void RadiusCompensation::retract(const MotionBlock& m) {
       const Piece& c = window_[j];
       if (c.index < oldest) break;
       if (!c.valid) continue;
-      std::optional<geom::Crossing> best;
-      for (const auto& x : geom::intersect(c.compensated, ext))
-        if (x.u1 > kEps && x.u1 < 1 + kEps && (ext.arc || x.u2 > -kEps) &&
-            (!best || x.u1 > best->u1))
-          best = x;
+      // On the earlier element (a line extension only forwards), nearest its end.
+      auto best = geom::nearestCrossing(
+          c.compensated, ext,
+          [&ext](const geom::Crossing& x) {
+            return x.u1 > kEps && x.u1 < 1 + kEps && (ext.arc || x.u2 > -kEps);
+          },
+          [](const geom::Crossing& x) { return -x.u1; });
       if (!best) continue;
       found = {j, best->p};
       if (m.trc.collision != CollisionCheck::Cdon) break;
@@ -597,16 +600,17 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     }
   }
   // G460: if the retraction line cuts the last equidistant before its end, that intersection
-  // replaces the normal point (details Q1).
+  // (the one nearest the end of the equidistant) replaces the normal point (details Q1).
   Piece& fin = window_.back();
   retract.p0 = fin.compensated.p1;
   if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > kEps) {
-    double best = -1;
-    for (const auto& x : geom::intersect(fin.compensated, retract))
-      if (x.u1 > -kEps && x.u1 < 1 - 1e-9 && x.u2 > 1e-9 && x.u2 < 1 + kEps && x.u1 > best) {
-        best = x.u1;
-        fin.compensated.p1 = x.p;
-      }
+    auto best = geom::nearestCrossing(
+        fin.compensated, retract,
+        [](const geom::Crossing& x) {
+          return x.u1 > -kEps && x.u1 < 1 - 1e-9 && x.u2 > 1e-9 && x.u2 < 1 + kEps;
+        },
+        [](const geom::Crossing& x) { return -x.u1; });
+    if (best) fin.compensated.p1 = best->p;
     retract.p0 = fin.compensated.p1;
   }
   flushAll();
@@ -634,11 +638,11 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
   const Vec2 dir = geom::unit(*t - p0);
   const double angle = geom::angleDeg(dir, first.programmed.startTangent());
   if (settings_.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
-    std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(line, first.compensated))
-      if (x.u1 > kEps && x.u2 < kEps &&
-          (!best || geom::length(x.p - p1) < geom::length(best->p - p1)))
-        best = x;
+    // The line extended meets the first equidistant extended backwards: nearest the contour
+    // start point.
+    auto best = geom::nearestCrossing(
+        line, first.compensated, [](const geom::Crossing& x) { return x.u1 > kEps && x.u2 < kEps; },
+        [&p1](const geom::Crossing& x) { return geom::length(x.p - p1); });
     if (best) {
       approach.compensated.p1 = best->p;
       first.compensated.p0 = best->p;
@@ -675,11 +679,12 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   const Vec2 dir = geom::unit(p2 - *t);
   const double angle = geom::angleDeg(last.programmed.endTangent(), dir);
   if (m.trc.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
-    std::optional<geom::Crossing> best;
-    for (const auto& x : geom::intersect(last.compensated, line))
-      if (x.u1 > 1 - kEps && x.u2 < 1 - kEps &&
-          (!best || geom::length(x.p - pe) < geom::length(best->p - pe)))
-        best = x;
+    // The last equidistant extended meets the line extended backwards: nearest the contour
+    // end point.
+    auto best = geom::nearestCrossing(
+        last.compensated, line,
+        [](const geom::Crossing& x) { return x.u1 > 1 - kEps && x.u2 < 1 - kEps; },
+        [&pe](const geom::Crossing& x) { return geom::length(x.p - pe); });
     if (best) {
       last.compensated.p1 = best->p;
       line.p0 = best->p;
