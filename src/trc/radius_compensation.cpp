@@ -19,7 +19,17 @@ using geom::Vec2;
 
 namespace {
 
+// The tolerances, with the values they had as literals; one name per role, so that changing
+// one does not change the others by accident.
+// Lengths (mm) and element parameters (fractions of an element): "on the element", "the same
+// point", "behind the contour".
 constexpr double kEps = 1e-9;
+// The turn condition of bottleneck detection: the cross product of the two unit tangents at a
+// crossing (W1 2.4.8, details Q5).
+constexpr double kTurnEps = 1e-9;
+// "No value / no motion": a compensation value, a plane or applicate motion, a change of the
+// value, the cross product of two antiparallel tangents (a reversal).
+constexpr double kZero = 1e-12;
 // The index of a block that never comes (for checkOpen when the window is flushed).
 constexpr long kNoLaterBlock = std::numeric_limits<long>::max() / 2;
 // How far the straight chords of a DISC transition curve may deviate from the curve (mm).
@@ -96,7 +106,7 @@ MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const 
 bool RadiusCompensation::planeMotion(const MotionBlock& m) const {
   if (m.motion == Motion::G2 || m.motion == Motion::G3) return true;
   Element e = toElement(m);
-  return geom::length(e.p1 - e.p0) > 1e-12;
+  return geom::length(e.p1 - e.p0) > kZero;
 }
 
 RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, double r0,
@@ -170,7 +180,7 @@ void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
     p.restart = true;
     return;
   }
-  compensateInto(p, m, old_r, std::fabs(old_r - new_r) < 1e-12 ? old_r : new_r);
+  compensateInto(p, m, old_r, std::fabs(old_r - new_r) < kZero ? old_r : new_r);
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) {
@@ -198,7 +208,7 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
   out_.programmed(m);
   switch (state_) {
     case State::Off: {
-      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > 1e-12;
+      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > kZero;
       if (!wants || !planeMotion(m)) {
         emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
         return {};
@@ -256,7 +266,7 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
         auto best = geom::nearestCrossing(
             approach.compensated, first.compensated,
             [](const geom::Crossing& x) {
-              return x.u1 > kEps && x.u1 < 1 - 1e-9 && x.u2 > -kEps && x.u2 < 1 + kEps;
+              return x.u1 > kEps && x.u1 < 1 - kEps && x.u2 > -kEps && x.u2 < 1 + kEps;
             },
             [](const geom::Crossing& x) { return x.u1; });
         if (best) approach.compensated.p1 = first.compensated.p0 = best->p;
@@ -336,7 +346,7 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   const Vec2 t1 = cur.programmed.endTangent(), t2 = next.programmed.startTangent();
   const double c = geom::cross(t1, t2), d = geom::dot(t1, t2);
   const double s = next.side;
-  const bool reversal = std::fabs(c) < 1e-12 && d < 0;
+  const bool reversal = std::fabs(c) < kZero && d < 0;
   const bool inside = !reversal && s * c > 0;
   const Element e1 = cornerEquidistant(cur, true), e2 = cornerEquidistant(next, false);
   if (inside) {
@@ -438,14 +448,14 @@ std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(
     const Piece& c, const Element& target, bool extension, const Element& later, double side) {
   auto accept = [&](const geom::Crossing& x) {
     const bool on_target =
-        extension ? (!target.arc ? x.u1 > -kEps : true) : x.u1 > kEps && x.u1 < 1 - 1e-9;
+        extension ? (!target.arc ? x.u1 > -kEps : true) : x.u1 > kEps && x.u1 < 1 - kEps;
     if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) return false;
     // Like an inside corner: the later element turns towards the compensation side.
     // (With an extension the approach becomes the straight line to the point.)
     const Vec2 t1 = extension    ? geom::unit(x.p - c.compensated.p0)
                     : target.arc ? geom::tangentAt(target, x.p)
                                  : geom::unit(target.p1 - target.p0);
-    return !(side * geom::cross(t1, geom::tangentAt(later, x.p)) < 1e-9);
+    return !(side * geom::cross(t1, geom::tangentAt(later, x.p)) < kTurnEps);
   };
   // Nearest the start of the later element.
   return geom::nearestCrossing(target, later, accept, [](const geom::Crossing& x) { return x.u2; });
@@ -516,7 +526,7 @@ void RadiusCompensation::omitAfter(size_t keep, Vec2 at, bool keep_last) {
                  "path component of the block in the compensation plane becomes zero: block "
                  "omitted by bottleneck detection of tool radius compensation");
     // Everything but the plane motion runs at the intersection, in program order (Q5).
-    if (std::fabs(p.block.end[pa.applicate] - p.block.start[pa.applicate]) > 1e-12)
+    if (std::fabs(p.block.end[pa.applicate] - p.block.start[pa.applicate]) > kZero)
       window_[keep].waiting.push_back(atPoint(p.block, at));
     for (auto& w : p.waiting) window_[keep].waiting.push_back(std::move(w));
   }
@@ -607,7 +617,7 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     auto best = geom::nearestCrossing(
         fin.compensated, retract,
         [](const geom::Crossing& x) {
-          return x.u1 > -kEps && x.u1 < 1 - 1e-9 && x.u2 > 1e-9 && x.u2 < 1 + kEps;
+          return x.u1 > -kEps && x.u1 < 1 - kEps && x.u2 > kEps && x.u2 < 1 + kEps;
         },
         [](const geom::Crossing& x) { return -x.u1; });
     if (best) fin.compensated.p1 = best->p;
