@@ -6,11 +6,6 @@ namespace ncoffset::geom {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-Vec2 unit(Vec2 v) {
-  double l = length(v);
-  return l > 0 ? (1.0 / l) * v : Vec2{1, 0};
-}
-
 double angleOf(Vec2 c, Vec2 p) {
   return std::atan2(p.o - c.o, p.a - c.a);
 }
@@ -140,6 +135,29 @@ std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
     if (h == 0) break;
   }
   return out;
+}
+
+Element fullCircle(Vec2 c, double r) {
+  Element e;
+  e.arc = true;
+  e.c = c;
+  e.p0 = e.p1 = {c.a + r, c.o};
+  e.ccw = true;
+  return e;
+}
+
+std::optional<Vec2> tangentPoint(Vec2 p, Vec2 c, double r, double s, bool towards) {
+  Vec2 v = p - c;
+  double d = length(v);
+  if (d <= r + 1e-9) return std::nullopt;
+  double phi = std::atan2(v.o, v.a), alpha = std::acos(r / d);
+  for (double ang : {phi + alpha, phi - alpha}) {
+    Vec2 t{c.a + r * std::cos(ang), c.o + r * std::sin(ang)};
+    Vec2 dir = towards ? t - p : p - t;
+    double sidedness = cross(dir, c - (towards ? p : t));
+    if (s * sidedness < 0) return t;
+  }
+  return std::nullopt;
 }
 
 }  // namespace ncoffset::geom

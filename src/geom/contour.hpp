@@ -33,6 +33,18 @@ inline double length(Vec2 v) {
 inline Vec2 leftNormal(Vec2 t) {
   return {-t.o, t.a};
 }
+// The unit vector along v; (1, 0) for the zero vector, so that a degenerate element still has
+// a direction.
+inline Vec2 unit(Vec2 v) {
+  const double l = length(v);
+  return l > 0 ? (1.0 / l) * v : Vec2{1, 0};
+}
+// The angle between two unit vectors in degrees, 0..180: the contour angle that MD20210
+// CUTCOM_CORNER_LIMIT and MD20230 CUTCOM_CURVE_INSERT_LIMIT are compared with (details Q3/Q4).
+inline double angleDeg(Vec2 t1, Vec2 t2) {
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  return std::acos(std::fmax(-1.0, std::fmin(1.0, dot(t1, t2)))) * kDeg;
+}
 
 // A line (arc == false) or a circular arc from p0 to p1 about c, turning ccw (G3) or cw (G2).
 // `turns` full revolutions are added to the sweep (TURN=).
@@ -61,6 +73,35 @@ struct Crossing {
   double u1, u2;
 };
 std::vector<Crossing> intersect(const Element& e1, const Element& e2);
+
+// Of the crossings of e1 and e2 that `accept` takes, the one with the least `key` (of equal
+// keys the first found). Every "which crossing counts" rule of radius compensation is one of
+// these: nearest the start of e2 (key u2), nearest the start of e1 (u1), nearest the end of e1
+// (-u1), nearest a point (the distance to it).
+template <typename Accept, typename Key>
+std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, Accept accept,
+                                        Key key) {
+  std::optional<Crossing> best;
+  double best_key = 0;
+  for (const Crossing& x : intersect(e1, e2)) {
+    if (!accept(x)) continue;
+    const double k = key(x);
+    if (!best || k < best_key) {
+      best = x;
+      best_key = k;
+    }
+  }
+  return best;
+}
+
+// A full circle about c (radius r) as an element: every point of it has a parameter in [0, 1]
+// (so a crossing with it is never on an "extension").
+Element fullCircle(Vec2 c, double r);
+
+// The tangent point T on the circle about c (radius r) of a line through p that keeps c on its
+// right (s > 0) or its left (s < 0) when travelled p -> T (`towards`) or T -> p. nullopt when p
+// lies inside the circle (or on it, within 1e-9 mm).
+std::optional<Vec2> tangentPoint(Vec2 p, Vec2 c, double r, double s, bool towards);
 
 // The point at fraction u of an element (same parametrisation as Crossing).
 Vec2 pointAt(const Element& e, double u);

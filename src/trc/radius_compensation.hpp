@@ -10,6 +10,10 @@
 // intersection. An element leaves the window (is written) once no later block can reach it;
 // a junction still open then is alarm 10751. G461/G462 extend the approach and retraction
 // blocks by a circle / straight line for that search (§5.3).
+//
+// One class, implemented by concern: radius_compensation.cpp (the stage driver: selection,
+// dispatch, release, flush, STOPRE), pieces.cpp (elements and equidistants), corners.cpp,
+// bottleneck.cpp and approach_retraction.cpp; compensation_internal.hpp holds what they share.
 #pragma once
 
 #include <optional>
@@ -18,6 +22,7 @@
 
 #include "core/stage.hpp"
 #include "geom/contour.hpp"
+#include "trc/compensation_internal.hpp"
 #include "trc/piece_window.hpp"
 
 namespace ncoffset::trc {
@@ -66,6 +71,29 @@ class RadiusCompensation final : public core::Stage {
     std::vector<core::MotionBlock> waiting;     // blocks without plane motion after it
   };
 
+  // Forward declaration; defined in corners.cpp (the geometry of one junction).
+  struct Corner;
+
+  // --- The stage driver (radius_compensation.cpp): selection, dispatch, release, flush.
+  // A G41/G42 block with plane motion: waits for the first element (W1 2-41).
+  void startSelection(const core::MotionBlock& m);
+  void motionSelecting(const core::MotionBlock& m);
+  void motionOn(const core::MotionBlock& m);
+  void checkSameSettings(const core::MotionBlock& m) const;
+  // Writes the elements no later block can change.
+  void release();
+  void flushAll();
+  // The block moves in the plane. (Inline: asked for every block.)
+  static bool planeMotion(const core::MotionBlock& m) {
+    if (m.motion == Motion::G2 || m.motion == Motion::G3) return true;
+    // The plane part of the block: toElement(m).p1 - p0, without building the element.
+    const PlaneAxes pa = planeAxes(m.plane);
+    const geom::Vec2 d{m.end[pa.abscissa] - m.start[pa.abscissa],
+                       m.end[pa.ordinate] - m.start[pa.ordinate]};
+    return geom::length(d) > detail::kZero;
+  }
+
+  // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.
   geom::Element toElement(const core::MotionBlock& m) const;
   core::MotionBlock toBlock(const core::MotionBlock& like, const geom::Element& e) const;
   // The geometry of element `e` as a motion of block `like` (lines stay G0/G1).
@@ -82,36 +110,54 @@ class RadiusCompensation final : public core::Stage {
   // The next element with its compensation value (a change spreads over the block, Q8) and
   // side (a change of side starts anew at the block's start, like a selection).
   void compensateNext(Piece& p, const core::MotionBlock& m);
+
+  // --- Corners (corners.cpp, W1 2.4.3, 2.4.5, details Q3/Q4).
   // Joins `next` to the last element of the window (corner).
   void connect(Piece& cur, Piece& next);
+  // A change of side: the straight line from the old normal point to the new one.
+  void restartLine(Piece& next, geom::Vec2 from) const;
+  void insideCorner(Piece& cur, Piece& next, const Corner& k) const;
+  void outsideCorner(Piece& cur, Piece& next, const Corner& k) const;
   // The transition about corner point p from a (tangent ta) to b (tangent tb): the circle of
   // radius R, or with DISC > 0 the DISC curve as chords; the applicate runs from app0 to app1.
   void transition(std::vector<core::MotionBlock>& out, const core::MotionBlock& like, geom::Vec2 a,
                   geom::Vec2 ta, geom::Vec2 b, geom::Vec2 tb, geom::Vec2 p, double s, double disc,
                   double app0, double app1) const;
-  // A junction of the window without intersection, or an element without equidistant.
-  bool anyOpen() const;
-  // Bottleneck detection: intersects `next` with earlier elements of the window; `needed`:
-  // anyOpen() (CDOF searches only then, CDON always).
+
+  // --- Bottleneck detection (bottleneck.cpp, W1 2.4.8, spec §5.5, details Q5).
+  // A junction of the window without intersection, or an element without equidistant. (Here,
+  // not in bottleneck.cpp: the driver asks it for every block.)
+  bool anyOpen() const {
+    for (size_t i = 0; i < window_.size(); ++i)
+      if (window_[i].open_before || !window_[i].valid) return true;
+    return false;
+  }
+  // Intersects `next` with earlier elements of the window; `needed`: anyOpen() (CDOF searches
+  // only then, CDON always).
   void bridge(Piece& next, bool needed);
   // The crossing of `later` with `target` (element `c` itself, or with `extension` its G461/G462
   // extension) where a bridge may start: nearest the start of `later`, turning to `side`.
   static std::optional<geom::Crossing> bridgeCrossing(const Piece& c, const geom::Element& target,
                                                       bool extension, const geom::Element& later,
                                                       double side);
+  // The G461 circle / G462 line an approach line `c` is extended by for the search (Q7).
+  static geom::Element approachExtension(const Piece& c, double r);
   // Omits the window's elements after position `keep` (but the last one if `keep_last`); `at`
   // is where their other actions run.
   void omitAfter(size_t keep, geom::Vec2 at, bool keep_last);
   // Raises 10751 for a junction that no later block can close any more.
   void checkOpen(long next_index) const;
-  // Writes the elements no later block can change.
-  void release();
-  void flushAll();
+
+  // --- Approach and retraction (approach_retraction.cpp, W1 2.4.10, details Q1/Q2/Q7).
+  // The selection block's approach line to the first element (NORM or KONT); may move the
+  // start of `first`.
+  Piece approachLine(Piece& first);
   void kontApproach(Piece& approach, Piece& first);
-  void kontRetraction(const core::MotionBlock& m);
   void retract(const core::MotionBlock& m);
-  void checkSameSettings(const core::MotionBlock& m) const;
-  bool planeMotion(const core::MotionBlock& m) const;
+  // G461/G462: the last element, meeting no earlier one, extended to find one (Q7).
+  void retractionExtension(const core::MotionBlock& m);
+  void kontRetraction(const core::MotionBlock& m);
+
   // +1: compensated to the left of travel. G41: left of the direction of travel; a negative
   // compensation value changes the side (PM-NC p256).
   static double sideOf(const core::TrcSettings& t) {

@@ -15,16 +15,12 @@ using core::SarRequest;
 using core::SarSide;
 using core::TrcMode;
 using core::TrcSettings;
+using geom::unit;
 using geom::Vec2;
 
 namespace {
 
 constexpr double kEps = 1e-9;
-
-Vec2 unit(Vec2 v) {
-  double l = geom::length(v);
-  return l > 0 ? (1.0 / l) * v : Vec2{1, 0};
-}
 
 Vec2 inPlane(const MotionBlock& m, const Vec3& v) {
   PlaneAxes pa = planeAxes(m.plane);

@@ -1,0 +1,212 @@
+// Approach and retraction of radius compensation (spec §5.2/§5.3, W1 2.4.10, details
+// Q1/Q2/Q7): NORM runs straight to / from the normal point of the first / last element, KONT
+// with the start / end point behind the contour goes around the contour point, and at the
+// retraction G461/G462 extend the last element to find an intersection with an earlier one
+// (their extension of the approach line is part of bottleneck detection, bottleneck.cpp).
+#include <cmath>
+
+#include "trc/compensation_internal.hpp"
+#include "trc/radius_compensation.hpp"
+
+namespace ncoffset::trc {
+
+using core::MotionBlock;
+using core::TrcStrategy;
+using detail::kEps;
+using geom::Element;
+using geom::Vec2;
+
+RadiusCompensation::Piece RadiusCompensation::approachLine(Piece& first) {
+  Piece approach;
+  approach.block = selection_;
+  approach.approach = true;
+  approach.strategy = selection_.trc.strategy;
+  approach.side = first.side;
+  approach.first_tangent = first.programmed.startTangent();
+  approach.programmed = toElement(selection_);
+  approach.compensated.p0 = approach.programmed.p0;
+  approach.compensated.p1 = first.compensated.p0;
+  const Vec2 p1 = first.programmed.p0;
+  const Vec2 n1 = first.side * geom::leftNormal(first.programmed.startTangent());
+  if (selection_.trc.approach == Approach::Kont &&
+      geom::dot(approach.programmed.p0 - p1, n1) < -kEps) {
+    approach.strategy =
+        TrcStrategy::G460;  // the point behind the contour: G461/G462 have no effect (Q7)
+    kontApproach(approach, first);
+  } else if (geom::length(approach.compensated.p1 - approach.compensated.p0) > kEps) {
+    // NORM: one straight line to the normal point of the first element (details Q1); if it
+    // cuts the first equidistant earlier, the intersection nearest the start of the line
+    // replaces that point (G460).
+    auto best = geom::nearestCrossing(
+        approach.compensated, first.compensated,
+        [](const geom::Crossing& x) {
+          return x.u1 > kEps && x.u1 < 1 - kEps && x.u2 > -kEps && x.u2 < 1 + kEps;
+        },
+        [](const geom::Crossing& x) { return x.u1; });
+    if (best) approach.compensated.p1 = first.compensated.p0 = best->p;
+  }
+  approach.raw = approach.compensated;
+  approach.box = geom::Box(approach.raw);
+  return approach;
+}
+
+// KONT with the start point behind the contour (details Q2): a straight line tangent to the
+// circle of radius R about the contour start point, then (G450) an arc on that circle to the
+// normal point of the first element, or (G451, below MD20210) the line extended to the first
+// equidistant. Both belong to the selection block.
+void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
+  const Vec2 p0 = approach.programmed.p0;
+  const Vec2 p1 = first.programmed.p0;
+  const double r = std::fabs(settings_.radius), s = first.side;
+  std::optional<Vec2> t = geom::tangentPoint(p0, p1, r, s, true);
+  if (!t)
+    throw AlarmError(
+        10755,
+        "activation of tool radius compensation via KONT not possible in current start point",
+        selection_.line);  // the selection block is the one to change
+  Element line;
+  line.p0 = p0;
+  line.p1 = *t;
+  const Vec2 dir = geom::unit(*t - p0);
+  const double angle = geom::angleDeg(dir, first.programmed.startTangent());
+  if (settings_.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
+    // The line extended meets the first equidistant extended backwards: nearest the contour
+    // start point.
+    auto best = geom::nearestCrossing(
+        line, first.compensated, [](const geom::Crossing& x) { return x.u1 > kEps && x.u2 < kEps; },
+        [&p1](const geom::Crossing& x) { return geom::length(x.p - p1); });
+    if (best) {
+      approach.compensated.p1 = best->p;
+      first.compensated.p0 = best->p;
+      return;
+    }
+  }
+  PlaneAxes pa = planeAxes(selection_.plane);
+  approach.compensated.p1 = *t;
+  approach.block.end[pa.applicate] = approach.block.start[pa.applicate];  // moves with the circle
+  first.transition.clear();
+  transition(first.transition, selection_, *t, dir, first.compensated.p0,
+             first.programmed.startTangent(), p1, s,
+             settings_.corner == CornerMode::TransitionCircle ? settings_.disc : 0,
+             approach.block.end[pa.applicate], selection_.end[pa.applicate]);
+}
+
+void RadiusCompensation::retract(const MotionBlock& m) {
+  // Deselection with G40 (NORM): the last element ends on its normal at its end point, then a
+  // straight line to the programmed end point (details Q1).
+  if (m.motion != Motion::G0 && m.motion != Motion::G1)
+    raise(10754, "deactivation of tool radius compensation only possible in linear block");
+  if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
+    detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
+  Piece& last = window_.back();
+  if (!last.valid) detail::collision(last.block.line, settings_.check_blocks);
+  const Vec2 pe = last.programmed.p1;
+  const Vec2 ne = last.side * geom::leftNormal(last.programmed.endTangent());
+  Element retract = toElement(m);
+  if (m.trc.approach == Approach::Kont && !last.emitted && geom::dot(retract.p1 - pe, ne) < -kEps) {
+    kontRetraction(m);
+    return;
+  }
+  if (last.open_before && !last.emitted &&
+      (m.trc.strategy == TrcStrategy::G461 || m.trc.strategy == TrcStrategy::G462))
+    retractionExtension(m);
+  // G460: if the retraction line cuts the last equidistant before its end, that intersection
+  // (the one nearest the end of the equidistant) replaces the normal point (details Q1).
+  Piece& fin = window_.back();
+  retract.p0 = fin.compensated.p1;
+  if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > kEps) {
+    auto best = geom::nearestCrossing(
+        fin.compensated, retract,
+        [](const geom::Crossing& x) {
+          return x.u1 > -kEps && x.u1 < 1 - kEps && x.u2 > kEps && x.u2 < 1 + kEps;
+        },
+        [](const geom::Crossing& x) { return -x.u1; });
+    if (best) fin.compensated.p1 = best->p;
+    retract.p0 = fin.compensated.p1;
+  }
+  flushAll();
+  emit(toBlock(m, retract));
+  state_ = State::Off;
+}
+
+void RadiusCompensation::retractionExtension(const MotionBlock& m) {
+  // G461/G462: the last element, which meets no earlier one, is extended by a circle about
+  // its programmed end point (radius R) or along its end tangent; the intersection with an
+  // earlier element ends that element and starts the retraction (W1 2.4.10, details Q7).
+  const Piece& last = window_.back();
+  Element ext;
+  if (m.trc.strategy == TrcStrategy::G461) {
+    ext = geom::fullCircle(last.programmed.p1, std::fabs(last.r1));
+  } else {
+    ext.p0 = last.raw.p1;
+    ext.p1 = last.raw.p1 + last.programmed.endTangent();
+  }
+  const long oldest = count_ + 1 - settings_.check_blocks;
+  std::optional<std::pair<size_t, Vec2>> found;
+  for (size_t j = window_.size() - 1; j-- > 0;) {
+    const Piece& c = window_[j];
+    if (c.index < oldest) break;
+    if (!c.valid) continue;
+    // On the earlier element (a line extension only forwards), nearest its end.
+    auto best = geom::nearestCrossing(
+        c.compensated, ext,
+        [&ext](const geom::Crossing& x) {
+          return x.u1 > kEps && x.u1 < 1 + kEps && (ext.arc || x.u2 > -kEps);
+        },
+        [](const geom::Crossing& x) { return -x.u1; });
+    if (!best) continue;
+    found = {j, best->p};
+    if (m.trc.collision != CollisionCheck::Cdon) break;
+  }
+  if (found) {
+    window_[found->first].compensated.p1 = found->second;
+    omitAfter(found->first, found->second, false);
+  }
+}
+
+// KONT retraction with the end point behind the contour (details Q2): from the normal point of
+// the last element, an arc about its end point to the tangent point of the line through the
+// programmed end point (G450), or the last equidistant extended to that line (G451); then the
+// straight line to the programmed end point. Both belong to the G40 block.
+void RadiusCompensation::kontRetraction(const MotionBlock& m) {
+  Piece& last = window_.back();
+  const Vec2 pe = last.programmed.p1;
+  const Vec2 p2 = toElement(m).p1;
+  const double r = std::fabs(last.r1), s = last.side;
+  std::optional<Vec2> t = geom::tangentPoint(p2, pe, r, s, false);
+  if (!t)
+    raise(10756,
+          "deactivation of tool radius compensation via KONT not possible at programmed end point");
+  Element line;
+  line.p0 = *t;
+  line.p1 = p2;
+  PlaneAxes pa = planeAxes(m.plane);
+  const Vec2 dir = geom::unit(p2 - *t);
+  const double angle = geom::angleDeg(last.programmed.endTangent(), dir);
+  if (m.trc.corner == CornerMode::Intersection && angle < settings_.corner_limit) {
+    // The last equidistant extended meets the line extended backwards: nearest the contour
+    // end point.
+    auto best = geom::nearestCrossing(
+        last.compensated, line,
+        [](const geom::Crossing& x) { return x.u1 > 1 - kEps && x.u2 < 1 - kEps; },
+        [&pe](const geom::Crossing& x) { return geom::length(x.p - pe); });
+    if (best) {
+      last.compensated.p1 = best->p;
+      line.p0 = best->p;
+      flushAll();
+      emit(toBlock(m, line));
+      state_ = State::Off;
+      return;
+    }
+  }
+  std::vector<MotionBlock> around;
+  transition(around, m, last.compensated.p1, last.programmed.endTangent(), *t, dir, pe, s,
+             m.trc.corner == CornerMode::TransitionCircle ? m.trc.disc : 0, m.start[pa.applicate],
+             m.start[pa.applicate]);
+  flushAll();
+  for (const MotionBlock& b : around) emit(b);
+  emit(toBlock(m, line));
+  state_ = State::Off;
+}
+
+}  // namespace ncoffset::trc

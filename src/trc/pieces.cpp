@@ -1,0 +1,150 @@
+// The elements of the radius compensation window (W1 2.4, details Q8): a block as a plane
+// element, its equidistant (also with a compensation value that changes within the block), and
+// a compensated element back as a block of the channel.
+#include <cmath>
+
+#include "trc/compensation_internal.hpp"
+#include "trc/radius_compensation.hpp"
+
+namespace ncoffset::trc {
+
+using core::MotionBlock;
+using core::TrcStrategy;
+using detail::kEps;
+using detail::kZero;
+using geom::Element;
+using geom::Vec2;
+
+Element RadiusCompensation::toElement(const MotionBlock& m) const {
+  PlaneAxes pa = planeAxes(m.plane);
+  Element e;
+  e.p0 = {m.start[pa.abscissa], m.start[pa.ordinate]};
+  e.p1 = {m.end[pa.abscissa], m.end[pa.ordinate]};
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+    e.arc = true;
+    e.c = {m.centre[pa.abscissa], m.centre[pa.ordinate]};
+    e.ccw = m.motion == Motion::G3;
+    e.turns = m.turns;
+  }
+  return e;
+}
+
+core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Element& e) const {
+  PlaneAxes pa = planeAxes(like.plane);
+  core::Geometry g{like.motion, like.start, like.end, like.centre, like.applicate, like.turns};
+  g.start[pa.abscissa] = e.p0.a;
+  g.start[pa.ordinate] = e.p0.o;
+  g.end[pa.abscissa] = e.p1.a;
+  g.end[pa.ordinate] = e.p1.o;
+  if (e.arc) {
+    g.motion = e.ccw ? Motion::G3 : Motion::G2;
+    g.centre[pa.abscissa] = e.c.a;
+    g.centre[pa.ordinate] = e.c.o;
+    g.centre[pa.applicate] = g.start[pa.applicate];
+    g.applicate = pa.applicate;
+    g.turns = e.turns;
+  } else if (g.motion == Motion::G2 || g.motion == Motion::G3) {
+    g.motion = Motion::G1;
+  }
+  return g;
+}
+
+MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
+  const core::Geometry g = geometry(like, e);
+  MotionBlock b = like;
+  b.motion = g.motion;
+  b.start = g.start;
+  b.end = g.end;
+  b.centre = g.centre;
+  b.applicate = g.applicate;
+  b.turns = g.turns;
+  return b;
+}
+
+MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const {
+  Element e;
+  e.p0 = e.p1 = at;
+  return toBlock(like, e);
+}
+
+RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, double r0,
+                                                         double r1) const {
+  Piece p;
+  compensateInto(p, m, r0, r1);
+  return p;
+}
+
+void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0,
+                                        double r1) const {
+  // Every field is set: `p` may be a reused slot of the window (its vectors keep their memory).
+  p.index = 0;
+  p.valid = true;
+  p.open_before = p.approach = p.restart = p.emitted = false;
+  p.strategy = TrcStrategy::G460;
+  p.transition.clear();
+  p.waiting.clear();
+  p.block = m;
+  p.programmed = toElement(m);
+  p.r0 = r0;
+  p.r1 = r1;
+  p.side = side();
+  const double s = p.side;
+  if (r0 == r1) {
+    auto eq = geom::equidistant(p.programmed, s * r0);
+    if (eq) p.compensated = *eq;
+    p.valid = eq.has_value();
+  } else if (!p.programmed.arc) {
+    // A new value in a line: from start + R_old n to end + R_new n (details Q8).
+    Vec2 n = s * geom::leftNormal(p.programmed.startTangent());
+    p.compensated = p.programmed;
+    p.compensated.p0 = p.programmed.p0 + r0 * n;
+    p.compensated.p1 = p.programmed.p1 + r1 * n;
+  } else {
+    // A new value in a circle: a spiral from radius r -+ R_old to r -+ R_new (details Q8).
+    const Element& e = p.programmed;
+    const double r = e.radius();
+    const double k = e.ccw ? -s : s;  // the left side of a ccw arc is its inside
+    const double ra = r + k * r0, rb = geom::length(e.p1 - e.c) + k * r1;
+    if (ra <= kEps || rb <= kEps)
+      raise(10758, "curvature radius with variable compensation value too small");
+    p.compensated = e;
+    p.compensated.p0 = e.c + (ra / r) * (e.p0 - e.c);
+    p.compensated.p1 = e.c + (rb / geom::length(e.p1 - e.c)) * (e.p1 - e.c);
+  }
+  p.raw = p.compensated;
+  p.box = geom::Box(p.raw);  // the trimmed element always stays inside
+  if (r0 != r1) {            // a varying value (spiral, inclined line): widen by the change
+    const double d = std::fabs(r1 - r0);
+    p.box.lo_a -= d, p.box.lo_o -= d, p.box.hi_a += d, p.box.hi_o += d;
+  }
+}
+
+Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const {
+  if (p.r0 == p.r1) return p.compensated;
+  double r = at_end ? p.r1 : p.r0;
+  auto e = geom::equidistant(p.programmed, p.side * r);
+  return e ? *e : p.compensated;
+}
+
+void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
+  const double old_side = side(), old_r = std::fabs(settings_.radius);
+  const double new_r = std::fabs(m.trc.radius);
+  settings_ = m.trc;
+  if (sideOf(m.trc) != old_side) {
+    // G41 <-> G42 (or the sign of the value) while active: the last element ends on its normal,
+    // the new side starts on the normal at this block's start (PM-NC "change of compensation
+    // direction"; details Q8 for the sign).
+    compensateInto(p, m, new_r, new_r);
+    p.restart = true;
+    return;
+  }
+  compensateInto(p, m, old_r, std::fabs(old_r - new_r) < kZero ? old_r : new_r);
+}
+
+void RadiusCompensation::emitPiece(const Piece& p) {
+  for (const MotionBlock& t : p.transition) emit(t);
+  out_.element(p.block, geometry(p.block, p.compensated));  // no copy of the block
+  for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
+}
+
+}  // namespace ncoffset::trc
