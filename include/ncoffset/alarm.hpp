@@ -6,10 +6,12 @@
 
 namespace ncoffset {
 
-// Where a block came from: the program file and its 1-based line.
+// Where a block came from: the program file, its 1-based line and, where known, the 1-based
+// column of the word or statement concerned (0: the whole line).
 struct SourceLoc {
   std::string file;
   int line = 0;
+  int column = 0;
 };
 
 // One alarm, carried as data and printed at the CLI edge as `FILE:LINE: alarm N: TEXT`.
@@ -19,6 +21,7 @@ struct Alarm {
   int number = 0;
   SourceLoc where;
   std::string text;
+  std::string source_line;  // the text of the line at `where` (empty where it is not known)
 };
 
 // Alarm numbers used across stages. Values verified against the 840D sl diagnostics manual
@@ -63,17 +66,24 @@ inline constexpr int kUnitsOrData = 99013;
 // Thrown inside the pipeline and caught at the run boundary, where it becomes an Alarm value.
 class AlarmError : public std::runtime_error {
  public:
-  AlarmError(int number, std::string text, int line = 0)
-      : std::runtime_error(text), number_(number), text_(std::move(text)), line_(line) {}
+  AlarmError(int number, std::string text, int line = 0, int column = 0)
+      : std::runtime_error(text),
+        number_(number),
+        text_(std::move(text)),
+        line_(line),
+        column_(column) {}
   int number() const { return number_; }
   // A line other than the executing block's (e.g. a structure error found by the pre-scan).
   int line() const { return line_; }
+  // The column, where the raising code knows it better than the executing statement (0).
+  int column() const { return column_; }
   const std::string& text() const { return text_; }
 
  private:
   int number_;
   std::string text_;
   int line_;
+  int column_;
 };
 
 [[noreturn]] inline void raise(int number, std::string text) {

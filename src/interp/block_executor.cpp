@@ -19,6 +19,8 @@ double Interpreter::toMm(double v) const {
 }
 
 void Interpreter::finishBlock() {
+  // An alarm of the block as a whole points at its first word.
+  column_ = block_.stmts.empty() ? 0 : block_.stmts.front().column;
   bool frames_changed = false;
   if (words_.frame_select) {
     int n = modal_.frame_select == 500  ? 0

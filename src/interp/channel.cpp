@@ -46,10 +46,10 @@ struct Channel::Impl {
       interp.run(prog, init);
     } catch (const AlarmError& e) {
       r.status = RunResult::Status::Alarm;
-      r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text()};
+      r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text(), interp.alarmSourceLine(e)};
     } catch (const std::bad_alloc&) {
       r.status = RunResult::Status::Alarm;
-      r.alarm = Alarm{alarm_no::kArrayTooLarge, {}, "out of memory"};
+      r.alarm = Alarm{alarm_no::kArrayTooLarge, {}, "out of memory", {}};
     }
     if (finish || r.alarm) out.finish(r.alarm ? &*r.alarm : nullptr);
     return r;

@@ -62,7 +62,18 @@ bool Interpreter::programExists(std::string_view name) {
 }
 
 SourceLoc Interpreter::alarmLoc(const AlarmError& e) const {
-  return {fileName(file_), e.line() ? e.line() : line_};
+  if (e.line() && e.line() != line_) return {fileName(file_), e.line(), e.column()};
+  return {fileName(file_), line_, e.column() ? e.column() : column_};
+}
+
+std::string Interpreter::alarmSourceLine(const AlarmError& e) const {
+  if (!e.line() || e.line() == line_) return std::string(line_text_);
+  // Another line of the alarm's file (a structure error found when it was loaded).
+  std::string_view text = flow_.text(file_), line;
+  lang::TextPos pos;
+  while (pos.line < e.line() && lang::nextLine(text, pos, line)) {
+  }
+  return pos.line == e.line() && lang::nextLine(text, pos, line) ? std::string(line) : "";
 }
 
 void Interpreter::run(LoadedProgram& program, bool init_file) {
@@ -77,6 +88,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     file_ = lvl.program->file_id;
     const bool more = flow_.nextLine(text, line_pos_);
     line_ = line_pos_.line;
+    line_text_ = text;
+    column_ = 0;
     if (!more) {
       // End of file: a subprogram returns, the main program (or init file) ends.
       if (flow_.depth() > 1) {
@@ -117,6 +130,7 @@ void Interpreter::executeBlock() {
   bool jumped = false;
   for (size_t i = 0; i < b.stmts.size() && !jumped; ++i) {
     const Stmt& st = b.stmts[i];
+    column_ = st.column;  // where an alarm of this statement points
     if (st.kind != StmtKind::Keyword || st.name != "DEF") {
       if (st.kind != StmtKind::Keyword || st.name != "PROC") lvl.defs_allowed = false;
     }

@@ -40,6 +40,8 @@ class Interpreter final : public lang::Environment {
   void run(LoadedProgram& program, bool init_file);
   LoadedProgram& load(std::shared_ptr<lang::SourceFile> source);
   SourceLoc alarmLoc(const AlarmError& e) const;
+  // The text of the line alarmLoc() names ("" where it is not known).
+  std::string alarmSourceLine(const AlarmError& e) const;
   const std::string& fileName(int id) const { return flow_.fileName(id); }
   void writeVariablesJson(std::ostream& out) const;
   void setSearchDir(std::filesystem::path dir) { flow_.setSearchDir(std::move(dir)); }
@@ -122,6 +124,8 @@ class Interpreter final : public lang::Environment {
   lang::Block block_;
   lang::TextPos line_pos_;  // start of the executing line
   int line_ = 0;
+  int column_ = 0;              // of the executing statement (0: the line as a whole)
+  std::string_view line_text_;  // the executing line (a view into its loaded file)
   int file_ = 0;
   long long executed_ = 0;
   size_t for_continue_ = static_cast<size_t>(-1);

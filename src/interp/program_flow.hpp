@@ -52,6 +52,7 @@ class ProgramFlow {
   const std::string& fileName(int id) const {
     return files_[static_cast<size_t>(id)]->source->name();
   }
+  std::string_view text(int id) const { return files_[static_cast<size_t>(id)]->source->text(); }
   // Where subprograms are searched: beside the main program.
   void setSearchDir(std::filesystem::path dir);
 

@@ -111,7 +111,8 @@ void JsonLinesWriter::finish(const Alarm* alarm) {
     auto& b = w_.buf();
     fmt::format_to(fmt::appender(b), "{{\"alarm\":{},\"file\":", alarm->number);
     appendJsonString(b, alarm->where.file);
-    fmt::format_to(fmt::appender(b), ",\"line\":{},\"text\":", alarm->where.line);
+    fmt::format_to(fmt::appender(b), ",\"line\":{},\"column\":{},\"text\":", alarm->where.line,
+                   alarm->where.column);
     appendJsonString(b, alarm->text);
     fmt::format_to(fmt::appender(b), "}}\n");
   }

@@ -156,7 +156,7 @@ TEST(JsonLinesWriter, SegmentsMessagesAndAlarmRecord) {
                   R"("cx":15,"cy":0,"cz":5,"normal":[0,0,1],"turns":2,"feed":100})");
   EXPECT_EQ(l[2], R"({"message":"tab\u0009here \"quoted\"","file":"MAIN.MPF","line":3})");
   EXPECT_EQ(l[3],
-            R"({"alarm":14040,"file":"MAIN.MPF","line":4,"text":"error in end point of circle"})");
+            R"({"alarm":14040,"file":"MAIN.MPF","line":4,"column":0,"text":"error in end point of circle"})");
 }
 
 TEST(JsonLinesWriter, NoAlarmRecordOnNormalEnd) {

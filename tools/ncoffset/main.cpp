@@ -83,6 +83,7 @@ int runAll(const Args& a, ncoffset::Channel& channel, ncoffset::PathSink& writer
       const auto& al = *r.alarm;
       ncoffset::cli::printError(
           fmt::format("{}:{}: alarm {}: {}", al.where.file, al.where.line, al.number, al.text));
+      ncoffset::cli::printSourceContext(al.where, al.source_line);
       return 2;
     }
     return 0;

@@ -53,4 +53,26 @@ void printError(std::string_view line) {
   std::fwrite(safe.data(), 1, safe.size(), stderr);
 }
 
+std::string sourceContext(const SourceLoc& where, std::string_view source) {
+  if (source.empty()) return {};
+  const std::string number = std::to_string(where.line);
+  const std::string gutter(number.size(), ' ');
+  std::string out = " " + number + " | " + terminalSafe(source) + "\n";
+  if (where.column <= 0 || static_cast<size_t>(where.column) > source.size() + 1) return out;
+  // The caret under the column as the line is shown: a tab stays a tab, an escaped control
+  // character takes its \xNN width, a UTF-8 character one place.
+  std::string pad;
+  for (unsigned char c : terminalSafe(source.substr(0, static_cast<size_t>(where.column) - 1)))
+    if (c == '\t')
+      pad.push_back('\t');
+    else if ((c & 0xC0) != 0x80)
+      pad.push_back(' ');
+  return out + " " + gutter + " | " + pad + "^\n";
+}
+
+void printSourceContext(const SourceLoc& where, std::string_view source) {
+  const std::string text = sourceContext(where, source);
+  std::fwrite(text.data(), 1, text.size(), stderr);
+}
+
 }  // namespace ncoffset::cli

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "ncoffset/alarm.hpp"
+
 namespace ncoffset::cli {
 
 // `text` with C0 controls, DEL, the C1 controls (U+0080..U+009F, which some terminals obey as
@@ -15,5 +17,12 @@ std::string terminalSafe(std::string_view text);
 
 // Writes terminalSafe(line) and a newline to stderr.
 void printError(std::string_view line);
+
+// The lines under an alarm that show where it is, as compilers do (nothing when `source` is
+// empty; no caret when the column is not known):
+//    12 | G1 X10 Y=1/0
+//       |       ^
+std::string sourceContext(const SourceLoc& where, std::string_view source);
+void printSourceContext(const SourceLoc& where, std::string_view source);
 
 }  // namespace ncoffset::cli
