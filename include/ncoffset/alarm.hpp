@@ -24,55 +24,81 @@ struct Alarm {
   std::string source_line;  // the text of the line at `where` (empty where it is not known)
 };
 
-// Alarm numbers used across stages. Values verified against the 840D sl diagnostics manual
-// where docs/alarms.md says so.
-namespace alarm_no {
-inline constexpr int kFeedNotProgrammed = 10860;
-inline constexpr int kSyntaxError = 12080;
-inline constexpr int kNotImplemented = 12140;
-inline constexpr int kValueRange = 12160;
-inline constexpr int kTypeMismatch = 12150;
-inline constexpr int kNameNotDefined = 12550;
-inline constexpr int kAlreadyDefined = 12170;
-inline constexpr int kControlNesting = 12640;
-inline constexpr int kControlDepth = 12641;
-inline constexpr int kProgramNotFound = 14011;
-inline constexpr int kWrongCallParams = 14020;
-inline constexpr int kCircleEndPoint = 14040;
-inline constexpr int kCircleProgramming = 14045;
-inline constexpr int kArithmetic = 14051;
-inline constexpr int kCircleTurns = 14048;
-inline constexpr int kJumpNotFound = 14080;
-inline constexpr int kUnknownGCode = 12470;
-inline constexpr int kAddressTwice = 12010;
-inline constexpr int kIllegalDef = 14500;
-inline constexpr int kArrayIndex1 = 17020;
-inline constexpr int kArrayIndex2 = 17030;
-inline constexpr int kSubprogramDepth = 14012;
-inline constexpr int kEdgeNotExisting = 17181;
-inline constexpr int kToolNotExisting = 17191;
-// ncoffset's own numbers: limits and constructs not modelled.
-inline constexpr int kLineTooLong = 99001;
-inline constexpr int kBlockLimit = 99002;
-inline constexpr int kExpressionDepth = 99003;
-inline constexpr int kTooManyVariables = 99004;
-inline constexpr int kArrayTooLarge = 99005;
-inline constexpr int kNotModelled = 99010;
-inline constexpr int kBadCharacter = 99011;
-inline constexpr int kFrameNotAffine = 99012;
-inline constexpr int kUnitsOrData = 99013;
-}  // namespace alarm_no
+// The alarm numbers ncoffset raises: the SINUMERIK 840D sl number where the control has one
+// (docs/alarms.md says which were verified against the diagnostics manual), ncoffset's own in
+// 99000..99999. `Alarm::number` carries the value as an int.
+enum class AlarmNumber : int {
+  // --- smooth approach and retraction (W1 2.4.4) ---
+  SarTooManyBlocks = 10740,     // more blocks without plane motion than MD20202 before the tangent
+  SarInfeedReversal = 10741,    // the infeed reverses its direction
+  SarInvalidDistance = 10742,   // DISR missing or invalid
+  SarProgrammedTwice = 10743,   // SAR in one block twice, or before the previous is complete
+  SarNoDirection = 10744,       // no block after an approach / no contour before a retraction
+  SarPreprocessorStop = 10746,  // STOPRE between the SAR block and its tangent block
+  SarRetractionDirection = 10747,  // G143 on a retraction with an implicit end point
+  // --- tool radius compensation (W1 2.4) ---
+  TrcCollision = 10751,             // no intersection within the MD20240 reviewed blocks
+  TrcSelectionNotLinear = 10753,    // G41/G42 selected in a circle block
+  TrcDeselectionNotLinear = 10754,  // G40 in a circle block
+  TrcKontSelection = 10755,         // KONT selection impossible at the start point
+  TrcKontDeselection = 10756,       // KONT deselection impossible at the end point
+  TrcPlaneChange = 10757,           // G17/G18/G19 while G41/G42 is active
+  TrcCurvatureTooSmall = 10758,     // curvature radius too small for a variable compensation value
+  TrcTooManyEmptyBlocks = 10762,    // more blocks without plane motion than MD20250
+  TrcBlockOmitted = 10763,          // warning: a block omitted by bottleneck detection
+  TrcPreprocessorStop = 10778,      // STOPRE while compensation is active, SD42480 = 1
+  // --- the channel ---
+  FeedNotProgrammed = 10860,  // G1/G2/G3 without a feedrate
+  AddressTwice = 12010,       // an address twice in one block
+  SyntaxError = 12080,        // syntax error (text and column given)
+  NotImplemented = 12140,     // a function the control does not have in this configuration
+  TypeMismatch = 12150,       // operation not compatible with the data type
+  ValueRange = 12160,         // value out of range
+  AlreadyDefined = 12170,     // a name defined twice
+  UnknownGCode = 12470,       // unknown G function
+  NameNotDefined = 12550,     // name not defined or option not available
+  ControlNesting = 12640,     // invalid nesting of control structures
+  ControlDepth = 12641,       // control structures nested too deep
+  ProgramNotFound = 14011,    // program not existing
+  SubprogramDepth = 14012,    // maximum subprogram level exceeded
+  WrongCallParams = 14020,    // wrong number or type of parameters in a call
+  CircleEndPoint = 14040,     // end point not on the circle
+  CircleProgramming = 14045,  // circle not defined
+  CircleTurns = 14048,        // TURN= outside 0..999
+  Arithmetic = 14051,         // arithmetic error (division by zero, SQRT(-1), overflow)
+  JumpNotFound = 14080,       // jump destination not found
+  IllegalDef = 14500,         // DEF after the first statement
+  ArrayIndex1 = 17020,        // array index 1 out of range
+  ArrayIndex2 = 17030,        // array index 2 out of range
+  EdgeNotExisting = 17181,    // T no., D no. not existing
+  ToolNotExisting = 17191,    // T not existing
+  // --- ncoffset's own: limits (docs/limits.md) and what it does not model ---
+  LineTooLong = 99001,       // block longer than --max-line-length
+  BlockLimit = 99002,        // more than --max-blocks executed blocks
+  ExpressionDepth = 99003,   // expression nested deeper than --max-expression-depth
+  TooManyVariables = 99004,  // more than --max-variables user variables (or tool edges)
+  ArrayTooLarge = 99005,     // array larger than the limits, or out of memory
+  NotModelled = 99010,       // a construct the control knows and ncoffset does not model
+  BadCharacter = 99011,      // a byte not allowed outside comments and strings
+  FrameNotAffine = 99012,    // a circle a non-uniform scale would make an ellipse
+  UnitsOrData = 99013,       // machine/setting data with a value ncoffset does not model
+};
+
+constexpr int toInt(AlarmNumber n) {
+  return static_cast<int>(n);
+}
 
 // Thrown inside the pipeline and caught at the run boundary, where it becomes an Alarm value.
 class AlarmError : public std::runtime_error {
  public:
-  AlarmError(int number, std::string text, int line = 0, int column = 0)
+  AlarmError(AlarmNumber number, std::string text, int line = 0, int column = 0)
       : std::runtime_error(text),
         number_(number),
         text_(std::move(text)),
         line_(line),
         column_(column) {}
-  int number() const { return number_; }
+  int number() const { return toInt(number_); }
+  AlarmNumber alarm() const { return number_; }
   // A line other than the executing block's (e.g. a structure error found by the pre-scan).
   int line() const { return line_; }
   // The column, where the raising code knows it better than the executing statement (0).
@@ -80,13 +106,13 @@ class AlarmError : public std::runtime_error {
   const std::string& text() const { return text_; }
 
  private:
-  int number_;
+  AlarmNumber number_;
   std::string text_;
   int line_;
   int column_;
 };
 
-[[noreturn]] inline void raise(int number, std::string text) {
+[[noreturn]] inline void raise(AlarmNumber number, std::string text) {
   throw AlarmError(number, std::move(text));
 }
 

@@ -11,7 +11,7 @@ namespace ncoffset::core {
 
 // `what` is not modelled, `why` says what it would change.
 [[noreturn]] inline void notModelled(std::string_view what, std::string_view why) {
-  raise(alarm_no::kNotModelled, fmt::format("{} is not modelled by ncoffset: {}", what, why));
+  raise(AlarmNumber::NotModelled, fmt::format("{} is not modelled by ncoffset: {}", what, why));
 }
 
 }  // namespace ncoffset::core

@@ -19,13 +19,13 @@ double dist(Vec2 p, Vec2 q) {
 ArcSolution solveArc(const ArcRequest& r) {
   const int defs = (r.centre ? 1 : 0) + (r.cr ? 1 : 0) + (r.ar ? 1 : 0);
   if (defs == 0)
-    raise(alarm_no::kCircleProgramming,
+    raise(AlarmNumber::CircleProgramming,
           "circle programming error: no centre (I, J, K), radius (CR=) or opening angle (AR=)");
   if (r.cr && (r.centre || r.ar))
-    raise(alarm_no::kCircleProgramming,
+    raise(AlarmNumber::CircleProgramming,
           "circle programming error: CR= cannot be combined with a centre or AR=");
   if (r.ar && r.centre && r.end)
-    raise(alarm_no::kCircleProgramming,
+    raise(AlarmNumber::CircleProgramming,
           "circle programming error: AR= with a centre needs no end point (over-determined)");
 
   ArcSolution s;
@@ -33,7 +33,7 @@ ArcSolution solveArc(const ArcRequest& r) {
     s.centre = *r.centre;
     s.radius = dist(r.start, s.centre);
     if (s.radius < 1e-9)
-      raise(alarm_no::kCircleProgramming, "circle programming error: start point is the centre");
+      raise(AlarmNumber::CircleProgramming, "circle programming error: start point is the centre");
     if (r.ar) {
       double ang = std::atan2(r.start.o - s.centre.o, r.start.a - s.centre.a) +
                    (r.ccw ? 1 : -1) * *r.ar * kDeg;
@@ -44,17 +44,17 @@ ArcSolution solveArc(const ArcRequest& r) {
     double r2 = dist(s.end, s.centre);
     double tol = std::fmax(r.tol_const, r.tol_factor * s.radius);
     if (std::fabs(r2 - s.radius) > tol)
-      raise(alarm_no::kCircleEndPoint,
+      raise(AlarmNumber::CircleEndPoint,
             fmt::format("error in end point of circle: start radius {:.6g}, end radius {:.6g}, "
                         "difference {:.6g} > {:.6g} (MD21000/MD21010)",
                         s.radius, r2, std::fabs(r2 - s.radius), tol));
     return s;
   }
-  if (!r.end) raise(alarm_no::kCircleProgramming, "circle programming error: end point missing");
+  if (!r.end) raise(AlarmNumber::CircleProgramming, "circle programming error: end point missing");
   s.end = *r.end;
   double d = dist(r.start, s.end);
   if (d < 1e-9)
-    raise(alarm_no::kCircleProgramming,
+    raise(AlarmNumber::CircleProgramming,
           "circle programming error: a full circle needs its centre (I, J, K)");
   Vec2 mid{(r.start.a + s.end.a) / 2, (r.start.o + s.end.o) / 2};
   Vec2 u{(s.end.a - r.start.a) / d, (s.end.o - r.start.o) / d};
@@ -62,11 +62,11 @@ ArcSolution solveArc(const ArcRequest& r) {
   double h;
   if (r.cr) {
     double rad = std::fabs(*r.cr);
-    if (rad < 1e-9) raise(alarm_no::kCircleProgramming, "circle programming error: CR=0");
+    if (rad < 1e-9) raise(AlarmNumber::CircleProgramming, "circle programming error: CR=0");
     double tol = std::fmax(r.tol_const, r.tol_factor * rad);
     if (d > 2 * rad + tol)
       raise(
-          alarm_no::kCircleEndPoint,
+          AlarmNumber::CircleEndPoint,
           fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
                       d, 2 * rad));
     h = std::sqrt(std::fmax(0.0, rad * rad - d * d / 4));
@@ -78,7 +78,7 @@ ArcSolution solveArc(const ArcRequest& r) {
   }
   double ar = *r.ar;
   if (!(ar > 0 && ar < 360))
-    raise(alarm_no::kCircleProgramming,
+    raise(AlarmNumber::CircleProgramming,
           "circle programming error: AR= with an end point must lie between 0 and 360 degrees");
   double half = ar * kDeg / 2;
   s.radius = d / (2 * std::sin(half));

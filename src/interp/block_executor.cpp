@@ -49,7 +49,7 @@ void Interpreter::finishBlock() {
   if (frames_changed) frames_.update();
   executeToolWords();
   if (words_.rpl && words_.frame_command.empty())
-    raise(alarm_no::kSyntaxError, "RPL= only with ROT or AROT");
+    raise(AlarmNumber::SyntaxError, "RPL= only with ROT or AROT");
 
   feed_before_ = modal_.feed;
   if (words_.f && !words_.dwell)
@@ -59,7 +59,7 @@ void Interpreter::finishBlock() {
                       words_.ar || words_.turn;
   bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
   if (circle_words && !is_arc)
-    raise(alarm_no::kCircleProgramming,
+    raise(AlarmNumber::CircleProgramming,
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   bool moved = false;
@@ -76,7 +76,7 @@ void Interpreter::finishBlock() {
     else
       endProgram();
     if (!words_.call.empty())
-      raise(alarm_no::kSyntaxError, "program call and program end in one block");
+      raise(AlarmNumber::SyntaxError, "program call and program end in one block");
     motion_before_ = modal_.motion;
     return;
   }
@@ -84,7 +84,7 @@ void Interpreter::finishBlock() {
   if (!words_.call.empty()) {
     callSubprogram(words_.call, words_.repeat.value_or(1));
   } else if (words_.repeat) {
-    raise(alarm_no::kSyntaxError, "pass count P without a subprogram call");
+    raise(AlarmNumber::SyntaxError, "pass count P without a subprogram call");
   }
 }
 
@@ -96,7 +96,7 @@ void Interpreter::doFrameCommand() {
   for (int i = 0; i < 3; ++i)
     if (words_.axis[i]) v[i] = words_.axis_value[i];
   if (words_.rpl && cmd != "ROT" && cmd != "AROT")
-    raise(alarm_no::kSyntaxError, "RPL= only with ROT or AROT");
+    raise(AlarmNumber::SyntaxError, "RPL= only with ROT or AROT");
   if (cmd == "TRANS" || cmd == "ATRANS") {
     Vec3 t{toMm(v.x), toMm(v.y), toMm(v.z)};
     if (cmd == "TRANS") {
@@ -110,11 +110,11 @@ void Interpreter::doFrameCommand() {
   if (cmd == "ROT" || cmd == "AROT") {
     for (double a : {v.x, v.y, v.z, words_.rpl.value_or(0.0)})
       if (!(std::fabs(a) <= 1e6))
-        raise(alarm_no::kValueRange, fmt::format("value range exceeded: rotation angle {}", a));
+        raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: rotation angle {}", a));
     Mat3 r;
     if (words_.rpl) {
       if (words_.axis[0] || words_.axis[1] || words_.axis[2])
-        raise(alarm_no::kSyntaxError, "ROT RPL= cannot be combined with axis angles");
+        raise(AlarmNumber::SyntaxError, "ROT RPL= cannot be combined with axis angles");
       r = rotationAbout(planeAxes(modal_.plane).applicate, *words_.rpl);
     } else {
       r = rpyMatrix(v);
@@ -132,7 +132,7 @@ void Interpreter::doFrameCommand() {
     for (int i = 0; i < 3; ++i) {
       if (!words_.axis[i]) continue;
       if (std::fabs(v[i]) < 1e-12 || !(std::fabs(v[i]) <= 1e6))
-        raise(alarm_no::kValueRange,
+        raise(AlarmNumber::ValueRange,
               fmt::format("value range exceeded: scale factor {} of {}", v[i], "XYZ"[i]));
       s[i] = v[i];
     }

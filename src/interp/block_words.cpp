@@ -63,21 +63,21 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
   char c = name[0];
   if (int i = axisIndex(c); i >= 0) {
     if (words_.axis[i])
-      raise(alarm_no::kAddressTwice, fmt::format("address {} programmed too often", name));
+      raise(AlarmNumber::AddressTwice, fmt::format("address {} programmed too often", name));
     words_.axis[i] = true;
     words_.axis_value[i] = value();
     words_.axis_mode[i] = st.mode;
     return;
   }
   if (st.mode != AxisMode::Default && c != 'I' && c != 'J' && c != 'K')
-    raise(alarm_no::kSyntaxError, fmt::format("AC/IC is not allowed with address {}", name));
+    raise(AlarmNumber::SyntaxError, fmt::format("AC/IC is not allowed with address {}", name));
   switch (c) {
     case 'I':
     case 'J':
     case 'K': {
       int i = c - 'I';
       if (words_.centre[i])
-        raise(alarm_no::kAddressTwice, fmt::format("address {} programmed too often", name));
+        raise(AlarmNumber::AddressTwice, fmt::format("address {} programmed too often", name));
       words_.centre[i] = true;
       words_.centre_value[i] = value();
       words_.centre_mode[i] = st.mode;
@@ -86,14 +86,14 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
     case 'G': {
       double g = value();
       if (!(g >= 0 && g <= 9999) || static_cast<int>(g) != g)  // also NaN
-        raise(alarm_no::kUnknownGCode, fmt::format("G function G{} is unknown", g));
+        raise(AlarmNumber::UnknownGCode, fmt::format("G function G{} is unknown", g));
       gCode(static_cast<int>(g));
       return;
     }
     case 'F': {
       double f = value();
       if (f < 0 || f > 1e9)
-        raise(alarm_no::kValueRange, fmt::format("value range exceeded: F{}", f));
+        raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: F{}", f));
       words_.f = f;
       return;
     }
@@ -109,7 +109,7 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
       programWord(c, st);
       return;
     case 'N':
-      raise(alarm_no::kSyntaxError, "block number N only at the start of a block");
+      raise(AlarmNumber::SyntaxError, "block number N only at the start of a block");
     default:
       notModelled(fmt::format("address {}", name),
                   "only the geometry axes X, Y, Z move; other axes and addresses are not modelled");
@@ -123,7 +123,7 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
     case 'M': {
       double m = value();
       if (m < 0 || m != std::floor(m))
-        raise(alarm_no::kValueRange, fmt::format("value range exceeded: M{}", m));
+        raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: M{}", m));
       // M6 (MD22560) changes the tool for the master spindle (MD20090 = 1).
       if (m == data_.get(md_change_m_) && st.ext <= 1) words_.tool_change = true;
       if (st.ext > 0) return;  // M2=3: function of spindle 2
@@ -134,7 +134,7 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
       return;  // other M functions (M0, M1, M3..M5, M6, M8, ...) do not move the path
     }
     case 'T': {
-      if (st.ext >= 0) raise(alarm_no::kSyntaxError, "T takes no address extension");
+      if (st.ext >= 0) raise(AlarmNumber::SyntaxError, "T takes no address extension");
       if (!st.literal) {
         Value v = eval_.eval(block_, st.expr);
         if (v.isText()) {
@@ -144,17 +144,17 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
       }
       double t = value();
       if (t < 0 || t != std::floor(t) || t > tool::kMaxTool)
-        raise(alarm_no::kValueRange,
+        raise(AlarmNumber::ValueRange,
               fmt::format("value range exceeded: T{} (T numbers are whole, 0..{})", t,
                           tool::kMaxTool));
       words_.tool = static_cast<int>(t);
       return;
     }
     case 'D': {
-      if (st.ext >= 0) raise(alarm_no::kSyntaxError, "D takes no address extension");
+      if (st.ext >= 0) raise(AlarmNumber::SyntaxError, "D takes no address extension");
       double d = value();
       if (d < 0 || d != std::floor(d) || d > tool::kMaxEdge)
-        raise(alarm_no::kValueRange,
+        raise(AlarmNumber::ValueRange,
               fmt::format("value range exceeded: D{} (D numbers are whole, 0..{})", d,
                           tool::kMaxEdge));
       words_.edge = static_cast<int>(d);
@@ -163,7 +163,7 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
     case 'L': {
       double l = value();
       if (l < 0 || l != std::floor(l) || l > 999999999 || st.has_equals)
-        raise(alarm_no::kSyntaxError, "L must be followed by a program number (0..999999999)");
+        raise(AlarmNumber::SyntaxError, "L must be followed by a program number (0..999999999)");
       call_name_ = fmt::format("L{}", static_cast<long long>(l));
       words_.call = call_name_;
       return;
@@ -171,7 +171,7 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
     case 'P': {
       double p = value();
       if (p != std::floor(p))
-        raise(alarm_no::kValueRange,
+        raise(AlarmNumber::ValueRange,
               fmt::format("value range exceeded: P{} (pass count 1..9999)", p));
       words_.repeat = static_cast<long long>(std::fmax(-1, std::fmin(p, 1e9)));
       return;
@@ -200,7 +200,7 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
   if (name == "TURN") {
     double t = value();
     if (t < 0 || t > 999 || t != std::floor(t))
-      raise(alarm_no::kCircleTurns,
+      raise(AlarmNumber::CircleTurns,
             fmt::format("wrong number of revolutions in circle programming: TURN={}", t));
     words_.turn = static_cast<int>(t);
     return;
@@ -208,7 +208,7 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
   if (name == "DISC") {
     double d = value();
     if (d < 0 || d > 100 || d != std::floor(d))
-      raise(alarm_no::kValueRange, fmt::format("value range exceeded: DISC={} (0..100)", d));
+      raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: DISC={} (0..100)", d));
     modal_.disc = std::fmin(d, data_.get(md_max_disc_));
     return;
   }
@@ -236,7 +236,7 @@ void Interpreter::sarWord(const Stmt& st) {
   auto distance = [&]() {
     double v = toMm(value());
     if (!std::isfinite(v) || std::fabs(v) > 1e9)
-      raise(alarm_no::kValueRange,
+      raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: {}={} (|value| <= 1e9 mm)", name, v));
     return v;
   };
@@ -246,7 +246,7 @@ void Interpreter::sarWord(const Stmt& st) {
   }
   if (name == "DISCL" || name == "DISRP") {
     if (st.mode == AxisMode::IC)
-      raise(alarm_no::kSyntaxError,
+      raise(AlarmNumber::SyntaxError,
             fmt::format("{}=IC(..) is not allowed (incremental is the default)", name));
     (name == "DISCL" ? words_.discl : words_.disrp) = distance();
     (name == "DISCL" ? words_.discl_ac : words_.disrp_ac) = st.mode == AxisMode::AC;
@@ -258,16 +258,16 @@ void Interpreter::sarWord(const Stmt& st) {
     if (!st.literal) {
       const lang::Node& v = block_.node(st.expr);
       if (v.kind == lang::NodeKind::Call && (v.text == "PM" || v.text == "PR")) {
-        if (v.b != 1) raise(alarm_no::kSyntaxError, "PM/PR take one value");
+        if (v.b != 1) raise(AlarmNumber::SyntaxError, "PM/PR take one value");
         words_.fad = eval_.number(block_, block_.arg(v, 0));
         if (!std::isfinite(*words_.fad) || *words_.fad < 0 || *words_.fad > 1e9)
-          raise(alarm_no::kValueRange, fmt::format("value range exceeded: FAD={}", *words_.fad));
+          raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: FAD={}", *words_.fad));
         return;
       }
     }
     words_.fad = value();
     if (!std::isfinite(*words_.fad) || *words_.fad < 0 || *words_.fad > 1e9)
-      raise(alarm_no::kValueRange, fmt::format("value range exceeded: FAD={}", *words_.fad));
+      raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: FAD={}", *words_.fad));
     return;
   }
 }

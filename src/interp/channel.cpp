@@ -49,7 +49,7 @@ struct Channel::Impl {
       r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text(), interp.alarmSourceLine(e)};
     } catch (const std::bad_alloc&) {
       r.status = RunResult::Status::Alarm;
-      r.alarm = Alarm{alarm_no::kArrayTooLarge, {}, "out of memory", {}};
+      r.alarm = Alarm{toInt(AlarmNumber::ArrayTooLarge), {}, "out of memory", {}};
     }
     if (finish || r.alarm) out.finish(r.alarm ? &*r.alarm : nullptr);
     return r;

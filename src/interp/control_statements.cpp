@@ -32,7 +32,7 @@ void Interpreter::ifStatement(const Stmt& st, size_t index, bool& jumped) {
       }
       return;
     }
-    if (index != 0) raise(alarm_no::kControlNesting, "IF must stand at the start of its block");
+    if (index != 0) raise(AlarmNumber::ControlNesting, "IF must stand at the start of its block");
     const auto& l = link();
     if (!cond) {
       flow_.continueAfter(l.partner);  // after ELSE, or after ENDIF
@@ -174,10 +174,10 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
     if (flow_.jumpToLabel(label, here, search)) return;
   }
   if (quiet) return;  // GOTOC: continue with the next block
-  raise(alarm_no::kJumpNotFound, fmt::format("jump destination {} not found ({} search)", label,
-                                             kind == 1   ? "forward"
-                                             : kind == 2 ? "backward"
-                                                         : "forward and backward"));
+  raise(AlarmNumber::JumpNotFound, fmt::format("jump destination {} not found ({} search)", label,
+                                               kind == 1   ? "forward"
+                                               : kind == 2 ? "backward"
+                                                           : "forward and backward"));
 }
 
 }  // namespace ncoffset::interp

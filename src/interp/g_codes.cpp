@@ -69,7 +69,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::gMotionPlaneFrame(int g) {
     case 19: {
       Plane p = g == 17 ? Plane::G17 : g == 18 ? Plane::G18 : Plane::G19;
       if (p != modal_.plane && modal_.trc != core::TrcMode::Off)
-        raise(10757,
+        raise(AlarmNumber::TrcPlaneChange,
               "change of compensation plane not possible while tool radius compensation is active");
       modal_.plane = p;
       return true;
@@ -240,11 +240,12 @@ void Interpreter::gCode(int g) {
     words_.frame_select = true;
     return;
   }
-  raise(alarm_no::kUnknownGCode, fmt::format("G function G{} is unknown", g));
+  raise(AlarmNumber::UnknownGCode, fmt::format("G function G{} is unknown", g));
 }
 
 void Interpreter::setSar(core::SarKind kind) {
-  if (words_.sar != core::SarKind::None) raise(10743, "SAR programmed several times in one block");
+  if (words_.sar != core::SarKind::None)
+    raise(AlarmNumber::SarProgrammedTwice, "SAR programmed several times in one block");
   words_.sar = kind;
 }
 
@@ -288,7 +289,7 @@ void Interpreter::namedWord(const Stmt& st) {
   }
   if (isOneOf(w, {"TRANS", "ATRANS", "ROT", "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR"})) {
     if (!words_.frame_command.empty())
-      raise(alarm_no::kSyntaxError, "each frame statement must stand in its own block");
+      raise(AlarmNumber::SyntaxError, "each frame statement must stand in its own block");
     words_.frame_command = w;
     return;
   }

@@ -100,11 +100,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     }
     if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
     if (++executed_ > options_.limits.max_blocks)
-      raise(alarm_no::kBlockLimit,
+      raise(AlarmNumber::BlockLimit,
             fmt::format("limit of {} executed blocks reached (endless loop?); raise --max-blocks",
                         options_.limits.max_blocks));
     if (text.size() > max_len)
-      raise(alarm_no::kLineTooLong,
+      raise(AlarmNumber::LineTooLong,
             fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",
                         text.size(), max_len));
     if (!text.empty() && text.front() == '%') continue;  // archive header %_N_NAME_MPF
@@ -112,7 +112,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     try {
       executeBlock();
     } catch (const std::bad_alloc&) {
-      raise(alarm_no::kArrayTooLarge, "out of memory while executing this block");
+      raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
     }
   }
   if (!init_file) {
@@ -167,7 +167,7 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
   std::string_view kw = st.name;
   if (kw == "DEF") {
     if (!lvl.defs_allowed)
-      raise(alarm_no::kIllegalDef,
+      raise(AlarmNumber::IllegalDef,
             "illegal DEF instruction: definitions must stand before the first statement of the "
             "program");
     for (const auto& d : b.decls) define(d);
@@ -175,7 +175,7 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
   }
   if (kw == "PROC") {
     if (st.ext > 0)
-      raise(alarm_no::kNotModelled,
+      raise(AlarmNumber::NotModelled,
             "PROC with formal parameters is not modelled by ncoffset (subprograms without "
             "parameters only)");
     return;
@@ -194,7 +194,7 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
     return;
   }
   if (loopStatement(st, jumped)) return;
-  raise(alarm_no::kSyntaxError, fmt::format("unexpected {}", kw));
+  raise(AlarmNumber::SyntaxError, fmt::format("unexpected {}", kw));
 }
 
 void Interpreter::endProgram() {
@@ -223,11 +223,11 @@ void Interpreter::define(const lang::Decl& d) {
     v.data[0] = convertForStore(eval_.eval(block_, d.init), d.type, d.string_length, name);
   } else if (d.init_first >= 0) {
     if (static_cast<size_t>(d.init_count) > count && !d.init_rep)
-      raise(alarm_no::kArrayIndex1,
+      raise(AlarmNumber::ArrayIndex1,
             fmt::format("illegal array index: {} values for {} elements of {}", d.init_count, count,
                         name));
     if (d.init_rep) {
-      if (d.init_count != 1) raise(alarm_no::kWrongCallParams, "REP takes one value");
+      if (d.init_count != 1) raise(AlarmNumber::WrongCallParams, "REP takes one value");
       Value x = convertForStore(eval_.eval(block_, block_.args[static_cast<size_t>(d.init_first)]),
                                 d.type, d.string_length, name);
       std::fill(v.data.begin(), v.data.end(), x);
@@ -251,7 +251,7 @@ bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool i
       }
       out = v->data[VariableStore::elementIndex(*v, idx, name)];
     } else {
-      if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", name));
+      if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} is not an array", name));
       out = v->data[0];
     }
     return true;
@@ -272,12 +272,12 @@ void Interpreter::assign(const Stmt& st) {
   const Node& target = block_.node(st.target);
   if (target.kind == NodeKind::Index && target.text == "AX" && !vars_.find("AX")) {
     // Indirect axis programming AX[axis]=value (PM-JP "Indirect programming").
-    if (target.b != 1) raise(alarm_no::kArrayIndex1, "AX[..] takes one axis");
+    if (target.b != 1) raise(AlarmNumber::ArrayIndex1, "AX[..] takes one axis");
     Stmt word = st;
     Value axis = eval_.evalOrSymbol(block_, block_.arg(target, 0));
-    if (!axis.isText()) raise(alarm_no::kTypeMismatch, "AX[..] needs an axis name");
+    if (!axis.isText()) raise(AlarmNumber::TypeMismatch, "AX[..] needs an axis name");
     if (axis.str != "X" && axis.str != "Y" && axis.str != "Z")
-      raise(alarm_no::kNotModelled,
+      raise(AlarmNumber::NotModelled,
             fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)",
                         axis.str));
     static constexpr std::string_view kAxes[] = {"X", "Y", "Z"};
@@ -299,13 +299,13 @@ void Interpreter::assign(const Stmt& st) {
 void Interpreter::store(const Node& target, const Value& v) {
   if (target.kind == NodeKind::RParam || target.kind == NodeKind::RIndex) {
     if (target.kind == NodeKind::RIndex && target.b != 1)
-      raise(alarm_no::kSyntaxError, "R[..] takes one index");
+      raise(AlarmNumber::SyntaxError, "R[..] takes one index");
     double n = target.kind == NodeKind::RParam
                    ? target.number
                    : lang::roundToInt(eval_.number(block_, block_.arg(target, 0)));
     vars_.r(n);  // range check before the type check
     if (!v.isNumeric())
-      raise(alarm_no::kTypeMismatch,
+      raise(AlarmNumber::TypeMismatch,
             fmt::format("operation not compatible with data type: R{} takes a number, not {}", n,
                         lang::typeName(v.type)));
     vars_.setR(n, v.num);
@@ -318,10 +318,10 @@ void Interpreter::store(const Node& target, const Value& v) {
     size_t at = 0;
     if (var->isArray()) {
       if (!indexed)
-        raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", target.text));
+        raise(AlarmNumber::TypeMismatch, fmt::format("array {} used without index", target.text));
       at = VariableStore::elementIndex(*var, idx, target.text);
     } else if (indexed) {
-      raise(alarm_no::kArrayIndex1, fmt::format("{} is not an array", target.text));
+      raise(AlarmNumber::ArrayIndex1, fmt::format("{} is not an array", target.text));
     }
     var->data[at] = convertForStore(v, var->type, var->string_length, target.text);
     return;

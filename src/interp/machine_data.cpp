@@ -151,18 +151,18 @@ int MachineData::find(std::string_view name) const {
 
 double MachineData::get(std::string_view name) const {
   int id = find(name);
-  if (id < 0) raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", name));
+  if (id < 0) raise(AlarmNumber::NameNotDefined, fmt::format("name {} not defined", name));
   return get(id);
 }
 
 double MachineData::checked(int id, double value) const {
   const DataSpec& s = spec(id);
   if (!std::isfinite(value))
-    raise(alarm_no::kValueRange, fmt::format("value range exceeded for {}", s.name));
+    raise(AlarmNumber::ValueRange, fmt::format("value range exceeded for {}", s.name));
   if (s.integer) value = std::round(value);
   if (s.only_default ? value != s.default_value : (value < s.lo || value > s.hi)) {
     raise(
-        s.only_default ? alarm_no::kUnitsOrData : alarm_no::kValueRange,
+        s.only_default ? AlarmNumber::UnitsOrData : AlarmNumber::ValueRange,
         s.only_default
             ? fmt::format("{} {} = {} is not modelled by ncoffset (only {}: {})",
                           s.cls == DataClass::ChannelSd || s.cls == DataClass::NckSd ? "SD" : "MD",

@@ -38,7 +38,7 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
                     (w.axis_mode[i] == AxisMode::Default && !modal.incremental);
     target[i] = absolute ? v : from[i] + v;
     if (!std::isfinite(target[i]) || std::fabs(target[i]) > 1e9)
-      raise(alarm_no::kValueRange,
+      raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: position {} of axis {}", target[i], "XYZ"[i]));
   }
   return target;
@@ -66,7 +66,7 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   m.end = to;
   m.has_feed = m.motion != Motion::G0;
   if (m.has_feed && modal.feed <= 0)
-    raise(alarm_no::kFeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
+    raise(AlarmNumber::FeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
   m.feed = m.has_feed ? modal.feed : 0;
   m.sar.kind = core::SarKind::None;
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
@@ -93,7 +93,7 @@ void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3
   core::MotionBlock& m = m_;
   PlaneAxes pa = planeAxes(modal.plane);
   if (w.centre[pa.applicate])
-    raise(alarm_no::kCircleProgramming,
+    raise(AlarmNumber::CircleProgramming,
           fmt::format("circle programming error: {} is not an interpolation parameter in the "
                       "active plane",
                       "IJK"[pa.applicate]));
@@ -102,7 +102,7 @@ void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3
   ea[pa.abscissa] = 1;
   eo[pa.ordinate] = 1;
   if (!plain && std::fabs(norm(l * ea) - norm(l * eo)) > 1e-9)
-    raise(alarm_no::kFrameNotAffine,
+    raise(AlarmNumber::FrameNotAffine,
           "a circle under different scale factors of the plane axes is an ellipse, which is not "
           "modelled");
   geom::ArcRequest req;
@@ -188,9 +188,9 @@ NCOFFSET_INLINE_STEP void MotionBuilder::checkRange(bool plain) const {
       const Vec3& p = checks[c];
       if (std::fabs(p[i]) <= 1e9) continue;  // the usual case: one comparison (false for NaN)
       if (!std::isfinite(p[i]))
-        raise(alarm_no::kArithmetic,
+        raise(AlarmNumber::Arithmetic,
               "arithmetic error in part program: position is not a finite number");
-      raise(alarm_no::kValueRange,
+      raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: position {} of axis {} beyond 1e9 mm", p[i],
                         "XYZ"[i]));
     }
@@ -200,7 +200,8 @@ NCOFFSET_INLINE_STEP void MotionBuilder::sarRequest(const BlockWords& w, const M
                                                     const BlockContext& at) {
   if (w.sar == core::SarKind::None) {
     if (w.disr || w.discl || w.disrp || w.fad)
-      raise(alarm_no::kSyntaxError, "DISR, DISCL, DISRP and FAD only in a SAR block (G147..G348)");
+      raise(AlarmNumber::SyntaxError,
+            "DISR, DISCL, DISRP and FAD only in a SAR block (G147..G348)");
     return;
   }
   m_.sar = core::SarRequest{};

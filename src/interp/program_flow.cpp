@@ -63,15 +63,15 @@ LoadedProgram* ProgramFlow::find(std::string_view name) {
 
 void ProgramFlow::call(std::string_view name, long long repeat) {
   if (static_cast<int>(levels_.size()) >= limits_.max_program_levels)
-    raise(alarm_no::kSubprogramDepth,
+    raise(AlarmNumber::SubprogramDepth,
           fmt::format("maximum subprogram level exceeded: {} program levels (--max-program-levels)",
                       limits_.max_program_levels));
   if (repeat < 1 || repeat > 9999)
-    raise(alarm_no::kValueRange,
+    raise(AlarmNumber::ValueRange,
           fmt::format("value range exceeded: P{} (pass count 1..9999)", repeat));
   LoadedProgram* prog = find(name);
   if (!prog)
-    raise(alarm_no::kProgramNotFound,
+    raise(AlarmNumber::ProgramNotFound,
           fmt::format(
               "program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
               name, name, name));
@@ -103,7 +103,7 @@ void ProgramFlow::continueAfter(const TextPos& line) {
 const lang::ControlLink& ProgramFlow::link(size_t offset) const {
   const lang::ControlLink* l = levels_.back().program->index->link(offset);
   if (!l)
-    raise(alarm_no::kControlNesting,
+    raise(AlarmNumber::ControlNesting,
           "invalid nesting of control structures: statement must stand at the start of its block");
   return *l;
 }

@@ -19,10 +19,10 @@ int axisOf(const Value& v) {
     if (v.str == "X") return 0;
     if (v.str == "Y") return 1;
     if (v.str == "Z") return 2;
-    raise(alarm_no::kNotModelled,
+    raise(AlarmNumber::NotModelled,
           fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)", v.str));
   }
-  raise(alarm_no::kTypeMismatch, "an axis name (X, Y, Z) is expected");
+  raise(AlarmNumber::TypeMismatch, "an axis name (X, Y, Z) is expected");
 }
 
 Value frameValue(const Frame& f) {
@@ -31,7 +31,7 @@ Value frameValue(const Frame& f) {
 
 const Frame& asFrame(const Value& v, std::string_view what) {
   if (v.type != Type::Frame || !v.frame)
-    raise(alarm_no::kTypeMismatch,
+    raise(AlarmNumber::TypeMismatch,
           fmt::format("operation not compatible with data type: {} needs a FRAME", what));
   return *v.frame;
 }
@@ -41,7 +41,7 @@ double& component(Frame& f, std::string_view comp, int axis) {
   if (comp == "FI") return f.fine[axis];
   if (comp == "RT") return f.rotation[axis];
   if (comp == "SC") return f.scale[axis];
-  raise(alarm_no::kNameNotDefined,
+  raise(AlarmNumber::NameNotDefined,
         fmt::format("frame component {} not defined (TR, FI, RT, SC, MI)", comp));
 }
 
@@ -52,11 +52,11 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
   whole = false;
   if (name == "$P_UIFR") {
     if (!indexed || (idx.size() != 1 && idx.size() != 3))
-      raise(alarm_no::kArrayIndex1, "$P_UIFR needs [n] or [n,axis,component]");
+      raise(AlarmNumber::ArrayIndex1, "$P_UIFR needs [n] or [n,axis,component]");
     double n = lang::toNumber(idx[0], "frame number");
     double count = data_.get("$MC_MM_NUM_USER_FRAMES");
     if (n < 0 || n >= count || n != std::floor(n))
-      raise(alarm_no::kArrayIndex1,
+      raise(AlarmNumber::ArrayIndex1,
             fmt::format("illegal array index 1: $P_UIFR[{}] (0..{}, MD28080)", n, count - 1));
     whole = idx.size() == 1;
     return &frames_.settable(static_cast<size_t>(n));
@@ -69,7 +69,7 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
   else
     return nullptr;
   if (indexed && idx.size() != 2)
-    raise(alarm_no::kArrayIndex1, fmt::format("{} needs no index or [axis,component]", name));
+    raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs no index or [axis,component]", name));
   whole = !indexed;
   return f;
 }
@@ -79,11 +79,11 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
       if (!indexed || idx.size() != 1)
-        raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+        raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
       out = Value::real(data_.get(id, axisOf(idx[0])));
       return true;
     }
-    if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
+    if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
     const DataSpec& s = data_.spec(id);
     out = s.integer ? Value::integer(data_.get(id)) : Value::real(data_.get(id));
     return true;
@@ -93,7 +93,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   if (name == "$P_APR" || name == "$P_AEP") {
     // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
     if (!indexed || idx.size() != 1)
-      raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+      raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
     out = Value::real((name == "$P_APR" ? motion_.approachPoints().apr
                                         : motion_.approachPoints().aep)[axisOf(idx[0])]);
     return true;
@@ -113,7 +113,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
       out = frameValue(act);
       return true;
     }
-    if (idx.size() != 2) raise(alarm_no::kArrayIndex1, "$P_ACTFRAME needs [axis,component]");
+    if (idx.size() != 2) raise(AlarmNumber::ArrayIndex1, "$P_ACTFRAME needs [axis,component]");
     int ax = axisOf(idx[0]);
     std::string comp = lang::toText(idx[1]);
     out = comp == "MI" ? Value::integer(act.mirror[static_cast<size_t>(ax)] ? 1 : 0)
@@ -121,7 +121,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     return true;
   }
   if (name == "$P_EP") {
-    if (!indexed || idx.size() != 1) raise(alarm_no::kArrayIndex1, "$P_EP needs [axis]");
+    if (!indexed || idx.size() != 1) raise(AlarmNumber::ArrayIndex1, "$P_EP needs [axis]");
     out = Value::real(motion_.wcs()[axisOf(idx[0])]);
     return true;
   }
@@ -145,11 +145,11 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
       if (!indexed || idx.size() != 1)
-        raise(alarm_no::kArrayIndex1, fmt::format("{} needs [axis]", name));
+        raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
       data_.set(id, axisOf(idx[0]), lang::toNumber(v, "machine data"));
       return;
     }
-    if (indexed) raise(alarm_no::kArrayIndex1, fmt::format("{} takes no index", name));
+    if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
     data_.set(id, lang::toNumber(v, "machine/setting data"));
     if (data_.spec(id).number == 28050) {  // MD28050 MM_NUM_R_PARAM: number of R parameters
       vars_.resizeR(static_cast<size_t>(data_.get(id)));
@@ -158,14 +158,14 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
   }
   if (tools_.write(name, idx, indexed, v)) return;
   if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
-    raise(alarm_no::kNameNotDefined, fmt::format("{} can only be read", name));
+    raise(AlarmNumber::NameNotDefined, fmt::format("{} can only be read", name));
   bool whole;
   Frame* f = frameByName(name, idx, indexed, whole);
   if (!f) {
     if (!name.empty() && name[0] == '$')
-      raise(alarm_no::kNameNotDefined,
+      raise(AlarmNumber::NameNotDefined,
             fmt::format("name {} not defined or option/function not available", name));
-    raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", name));
+    raise(AlarmNumber::NameNotDefined, fmt::format("name {} not defined", name));
   }
   if (whole) {
     *f = asFrame(v, name);
@@ -175,13 +175,13 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     std::string comp = lang::toText(idx[base + 1]);
     double x = lang::toNumber(v, "frame component");
     if (!(std::fabs(x) <= 1e9) || ((comp == "RT" || comp == "SC") && !(std::fabs(x) <= 1e6)))
-      raise(alarm_no::kValueRange,
+      raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: {}[..,{}] = {}", name, comp, x));
     if (comp == "MI") {
       f->mirror[static_cast<size_t>(ax)] = x != 0;
     } else {
       if (comp == "SC" && std::fabs(x) < 1e-12)
-        raise(alarm_no::kValueRange, "value range exceeded: scale factor 0");
+        raise(AlarmNumber::ValueRange, "value range exceeded: scale factor 0");
       if (comp == "TR" || comp == "FI") x = toMm(x);
       component(*f, comp, ax) = x;
     }
@@ -195,7 +195,7 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
   if (name == "CTRANS" || name == "CFINE" || name == "CROT" || name == "CSCALE") {
     if (args.size() % 2 != 0)
       raise(
-          alarm_no::kWrongCallParams,
+          AlarmNumber::WrongCallParams,
           fmt::format("wrong number of parameters in call of {}: axis/value pairs expected", name));
     Frame f;
     Vec3 angles;
@@ -210,7 +210,7 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
         angles[ax] = x;
       else {
         if (std::fabs(x) < 1e-12)
-          raise(alarm_no::kValueRange, "value range exceeded: scale factor 0");
+          raise(AlarmNumber::ValueRange, "value range exceeded: scale factor 0");
         f.scale[ax] = x;
       }
     }
@@ -223,28 +223,28 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
     return frameValue(f);
   }
   if (name == "MSG") {
-    if (args.size() > 2) raise(alarm_no::kWrongCallParams, "MSG takes one text");
+    if (args.size() > 2) raise(AlarmNumber::WrongCallParams, "MSG takes one text");
     sink_.message({fileName(file_), line_}, args.empty() || args[0].type == Type::Empty
                                                 ? std::string()
                                                 : lang::toText(args[0]));
     return Value::empty();
   }
   if (name == "CHANDATA") {
-    if (args.size() != 1) raise(alarm_no::kWrongCallParams, "CHANDATA takes a channel number");
+    if (args.size() != 1) raise(AlarmNumber::WrongCallParams, "CHANDATA takes a channel number");
     double ch = lang::toNumber(args[0], "channel");
     if (ch != 1)
-      raise(alarm_no::kNotModelled,
+      raise(AlarmNumber::NotModelled,
             fmt::format("CHANDATA({}): ncoffset models one channel (CHANDATA(1))", ch));
     return Value::empty();
   }
   if (name == "LENTOAX") return callLentoax(args);
   if (name == "GETTCOR" || name == "SETTCOR")
-    raise(alarm_no::kNotModelled,
+    raise(AlarmNumber::NotModelled,
           fmt::format("{} (tool environments) is not modelled by ncoffset", name));
   if (programExists(name))
-    raise(alarm_no::kNotModelled,
+    raise(AlarmNumber::NotModelled,
           fmt::format("subprogram call {}(...) with parameters is not modelled by ncoffset", name));
-  raise(alarm_no::kNameNotDefined,
+  raise(AlarmNumber::NameNotDefined,
         fmt::format("name {} not defined or option/function not available", name));
 }
 

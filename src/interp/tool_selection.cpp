@@ -30,10 +30,11 @@ Value Interpreter::callLentoax(std::span<const Value> args) {
                    const char* what) -> std::span<Value> {
     const lang::VarType type = integer ? lang::VarType::Int : lang::VarType::Real;
     if (v.type != Type::ArrayRef)
-      raise(alarm_no::kWrongCallParams, fmt::format("LENTOAX: {} must be an array variable", what));
+      raise(AlarmNumber::WrongCallParams,
+            fmt::format("LENTOAX: {} must be an array variable", what));
     UserVariable* var = vars_.find(v.str);
     if (!var || var->type != type || var->dims[0] != rows || var->dims[1] != cols)
-      raise(alarm_no::kWrongCallParams,
+      raise(AlarmNumber::WrongCallParams,
             fmt::format("LENTOAX: {} must be DEF {} {}[{}]", what,
                         type == lang::VarType::Int ? "INT" : "REAL", v.str,
                         cols ? fmt::format("{},{}", rows, cols) : fmt::format("{}", rows)));

@@ -22,7 +22,7 @@ void VariableStore::resizeR(size_t n) {
 
 double VariableStore::r(double number) const {
   if (number < 0 || number >= static_cast<double>(r_.size()) || number != std::floor(number))
-    raise(alarm_no::kArrayIndex1,
+    raise(AlarmNumber::ArrayIndex1,
           fmt::format("illegal array index: R{} (R0..R{} per MD28050)", number, r_.size() - 1));
   return r_[static_cast<size_t>(number)];
 }
@@ -82,13 +82,13 @@ UserVariable VariableStore::prepare(const lang::Decl& d) const {
   const VariableMap& scope = current();
   std::string_view name = d.name;
   if (scope.find(name) != scope.end() || globals_.find(name) != globals_.end())
-    raise(alarm_no::kAlreadyDefined, fmt::format("name {} defined several times", name));
+    raise(AlarmNumber::AlreadyDefined, fmt::format("name {} defined several times", name));
   if (name[0] == '$' ||
       (name.size() >= 2 && name[0] == 'R' &&
        std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })))
-    raise(alarm_no::kSyntaxError, fmt::format("{} is a reserved name", name));
+    raise(AlarmNumber::SyntaxError, fmt::format("{} is a reserved name", name));
   if (variable_count_ >= limits_.max_variables)
-    raise(alarm_no::kTooManyVariables,
+    raise(AlarmNumber::TooManyVariables,
           fmt::format("more than {} user variables (--max-variables)", limits_.max_variables));
   UserVariable v;
   v.type = d.type;
@@ -100,7 +100,7 @@ UserVariable VariableStore::prepare(const lang::Decl& d) const {
     count = static_cast<size_t>(d.dims[0]) * static_cast<size_t>(d.dims[1] > 0 ? d.dims[1] : 1);
     if (count > limits_.max_array_elements || element_count_ + count > limits_.max_total_elements)
       raise(
-          alarm_no::kArrayTooLarge,
+          AlarmNumber::ArrayTooLarge,
           fmt::format("array {} has {} elements: more than {} in one array (--max-array-elements) "
                       "or {} in all (--max-total-elements)",
                       name, count, limits_.max_array_elements, limits_.max_total_elements));
@@ -119,14 +119,14 @@ size_t VariableStore::elementIndex(const UserVariable& var, std::span<const Valu
                                    std::string_view name) {
   int dims = var.dims[1] > 0 ? 2 : 1;
   if (static_cast<int>(idx.size()) != dims)
-    raise(alarm_no::kArrayIndex1,
+    raise(AlarmNumber::ArrayIndex1,
           fmt::format("illegal array index: {} has {} dimension(s), {} index(es) given", name, dims,
                       idx.size()));
   size_t flat = 0;
   for (int k = 0; k < dims; ++k) {
     double x = lang::toNumber(idx[static_cast<size_t>(k)], "array index");
     if (x != std::floor(x) || x < 0 || x >= var.dims[k])
-      raise(k == 0 ? alarm_no::kArrayIndex1 : alarm_no::kArrayIndex2,
+      raise(k == 0 ? AlarmNumber::ArrayIndex1 : AlarmNumber::ArrayIndex2,
             fmt::format("illegal array index {}: {}[{}] with {} outside 0..{}", k + 1, name,
                         k == 0 ? "i" : "..,j", x, var.dims[k] - 1));
     flat = flat * static_cast<size_t>(k == 0 ? 1 : var.dims[1]) + static_cast<size_t>(x);

@@ -56,7 +56,7 @@ Value initialValue(VarType t) {
 
 Value convertForStore(const Value& v, VarType t, int string_length, std::string_view name) {
   auto mismatch = [&]() -> Value {
-    raise(alarm_no::kTypeMismatch,
+    raise(AlarmNumber::TypeMismatch,
           fmt::format("operation not compatible with data type: {} value cannot be stored in {} "
                       "variable {}",
                       lang::typeName(v.type), varTypeName(t), name));
@@ -65,7 +65,7 @@ Value convertForStore(const Value& v, VarType t, int string_length, std::string_
     case VarType::Int:
       if (!v.isNumeric()) return mismatch();
       if (std::fabs(v.num) > 2147483647.0)
-        raise(alarm_no::kValueRange,
+        raise(AlarmNumber::ValueRange,
               fmt::format("value range exceeded: {} does not fit INT {}", v.num, name));
       return Value::integer(lang::roundToInt(v.num) + 0.0);
     case VarType::Real:
@@ -77,7 +77,7 @@ Value convertForStore(const Value& v, VarType t, int string_length, std::string_
     case VarType::Char:
       if (v.isNumeric()) {
         if (!(v.num >= 0 && v.num <= 255))
-          raise(alarm_no::kValueRange,
+          raise(AlarmNumber::ValueRange,
                 fmt::format("value range exceeded: {} does not fit CHAR {} (0..255)", v.num, name));
         return {Type::Char, lang::roundToInt(v.num), {}, {}};
       }
@@ -89,7 +89,7 @@ Value convertForStore(const Value& v, VarType t, int string_length, std::string_
       std::string s = lang::toText(v);
       if (static_cast<int>(s.size()) > string_length)
         raise(
-            alarm_no::kValueRange,
+            AlarmNumber::ValueRange,
             fmt::format("value range exceeded: string of {} characters does not fit STRING[{}] {}",
                         s.size(), string_length, name));
       return Value::string(std::move(s));

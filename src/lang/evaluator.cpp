@@ -15,7 +15,7 @@ constexpr double kIntMax = 2147483647.0;
 
 void checkFinite(double v, const char* what) {
   if (!std::isfinite(v))
-    raise(alarm_no::kArithmetic,
+    raise(AlarmNumber::Arithmetic,
           fmt::format("arithmetic error in part program: {} gives no finite number", what));
 }
 
@@ -29,7 +29,7 @@ Value numeric(Type t, double v, const char* what) {
 // unrepresentable double).
 int64_t bitOperand(double v) {
   if (!(std::fabs(v) <= 4294967295.0))
-    raise(alarm_no::kValueRange, fmt::format("value range exceeded: {} in a bit operation", v));
+    raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: {} in a bit operation", v));
   return static_cast<int64_t>(std::round(v));
 }
 
@@ -64,10 +64,10 @@ const char* typeName(Type t) {
 double toNumber(const Value& v, const char* what) {
   if (v.isNumeric()) return v.num;
   if (v.type == Type::Symbol)
-    raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", v.str));
+    raise(AlarmNumber::NameNotDefined, fmt::format("name {} not defined", v.str));
   if (v.type == Type::ArrayRef)
-    raise(alarm_no::kTypeMismatch, fmt::format("array {} used without index", v.str));
-  raise(alarm_no::kTypeMismatch,
+    raise(AlarmNumber::TypeMismatch, fmt::format("array {} used without index", v.str));
+  raise(AlarmNumber::TypeMismatch,
         fmt::format("operation not compatible with data type: {} is {}, a number is needed", what,
                     typeName(v.type)));
 }
@@ -91,7 +91,7 @@ std::string toText(const Value& v) {
     case Type::Real:
       return fmt::format("{}", v.num);
     default:
-      raise(alarm_no::kTypeMismatch,
+      raise(AlarmNumber::TypeMismatch,
             fmt::format("operation not compatible with data type {}", typeName(v.type)));
   }
 }
@@ -147,14 +147,14 @@ Value Evaluator::eval(const Block& b, int n) {
     case NodeKind::RParam:
       return env_.readR(node.number);
     case NodeKind::RIndex: {
-      if (node.b != 1) raise(alarm_no::kSyntaxError, "R[..] takes one index");
+      if (node.b != 1) raise(AlarmNumber::SyntaxError, "R[..] takes one index");
       return env_.readR(roundToInt(number(b, b.arg(node, 0))));
     }
     case NodeKind::Name: {
       Value v;
-      if (node.text.empty()) raise(alarm_no::kSyntaxError, "value missing");
+      if (node.text.empty()) raise(AlarmNumber::SyntaxError, "value missing");
       if (!env_.read(node.text, {}, false, v))
-        raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", node.text));
+        raise(AlarmNumber::NameNotDefined, fmt::format("name {} not defined", node.text));
       return v;
     }
     case NodeKind::Index: {
@@ -162,12 +162,12 @@ Value Evaluator::eval(const Block& b, int n) {
       evalArgs(b, node, idx);
       Value v;
       if (!env_.read(node.text, idx, true, v))
-        raise(alarm_no::kNameNotDefined, fmt::format("name {} not defined", node.text));
+        raise(AlarmNumber::NameNotDefined, fmt::format("name {} not defined", node.text));
       return v;
     }
     case NodeKind::Call: {
       if (node.text == "AC" || node.text == "IC")
-        raise(alarm_no::kSyntaxError,
+        raise(AlarmNumber::SyntaxError,
               fmt::format("{}(..) is only allowed as the whole value of an address", node.text));
       std::vector<Value> args;
       evalArgs(b, node, args);
@@ -188,7 +188,7 @@ Value Evaluator::eval(const Block& b, int n) {
         default:
           break;
       }
-      raise(alarm_no::kSyntaxError, "bad unary operator");
+      raise(AlarmNumber::SyntaxError, "bad unary operator");
     }
     case NodeKind::Binary: {
       Value l = eval(b, node.a);
@@ -196,7 +196,7 @@ Value Evaluator::eval(const Block& b, int n) {
       return binary(node.op, l, r);
     }
   }
-  raise(alarm_no::kSyntaxError, "bad expression");
+  raise(AlarmNumber::SyntaxError, "bad expression");
 }
 
 Value Evaluator::binary(Op op, const Value& l, const Value& r) {
@@ -206,7 +206,7 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
     bool eq;
     if (l.isText() || r.isText()) {
       if (!(l.isText() && r.isText()))
-        raise(alarm_no::kTypeMismatch,
+        raise(AlarmNumber::TypeMismatch,
               "operation not compatible with data type: comparing text with a number");
       eq = l.str == r.str;
     } else {
@@ -227,14 +227,14 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
       return numeric(nt, a * c, "*");
     case Op::Div:
       if (c == 0)
-        raise(alarm_no::kArithmetic, "arithmetic error in part program: division by zero");
+        raise(AlarmNumber::Arithmetic, "arithmetic error in part program: division by zero");
       return numeric(Type::Real, a / c, "/");
     case Op::IntDiv:
       if (std::trunc(c) == 0)
-        raise(alarm_no::kArithmetic, "arithmetic error in part program: DIV by zero");
+        raise(AlarmNumber::Arithmetic, "arithmetic error in part program: DIV by zero");
       return numeric(Type::Int, std::trunc(a / c), "DIV");
     case Op::Mod:
-      if (c == 0) raise(alarm_no::kArithmetic, "arithmetic error in part program: MOD by zero");
+      if (c == 0) raise(AlarmNumber::Arithmetic, "arithmetic error in part program: MOD by zero");
       return numeric(nt, a - c * std::trunc(a / c), "MOD");
     case Op::BAnd:
     case Op::BOr:
@@ -260,20 +260,20 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
     default:
       break;
   }
-  raise(alarm_no::kSyntaxError, "bad operator");
+  raise(AlarmNumber::SyntaxError, "bad operator");
 }
 
 Value Evaluator::function(std::string_view name, std::span<const Value> args) {
   auto want = [&](size_t n) {
     if (args.size() != n)
-      raise(alarm_no::kWrongCallParams,
+      raise(AlarmNumber::WrongCallParams,
             fmt::format("wrong number of parameters in call of {}: {} expected, {} given", name, n,
                         args.size()));
   };
   auto arg = [&](size_t k) { return toNumber(args[k], "function argument"); };
   auto domain = [&](bool ok) {
     if (!ok)
-      raise(alarm_no::kArithmetic,
+      raise(AlarmNumber::Arithmetic,
             fmt::format("arithmetic error in part program: argument of {} out of range", name));
   };
   auto real = [&](double v) { return numeric(Type::Real, v, std::string(name).c_str()); };

@@ -145,7 +145,7 @@ class Parser {
 
   [[noreturn]] void syntax(const std::string& what) const {
     std::string near(s_.substr(i_ < s_.size() ? i_ : s_.size(), 24));
-    raise(alarm_no::kSyntaxError,
+    raise(AlarmNumber::SyntaxError,
           "syntax error in text at column " + std::to_string(column()) +
               (near.empty() ? std::string(" (end of block)") : " near '" + near + "'") + ": " +
               what);
@@ -586,9 +586,9 @@ class Parser {
 
   void enter() {
     if (++depth_ > limits_.max_expression_depth)
-      raise(alarm_no::kExpressionDepth, "expression nested deeper than the limit of " +
-                                            std::to_string(limits_.max_expression_depth) +
-                                            " (--max-expression-depth)");
+      raise(AlarmNumber::ExpressionDepth, "expression nested deeper than the limit of " +
+                                              std::to_string(limits_.max_expression_depth) +
+                                              " (--max-expression-depth)");
   }
   void leave() { --depth_; }
 
@@ -1266,9 +1266,9 @@ void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& 
     unsigned char c = static_cast<unsigned char>(text[static_cast<size_t>(bad - 1)]);
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", c);
-    raise(alarm_no::kBadCharacter, "character " + std::string(hex) + " at column " +
-                                       std::to_string(bad) +
-                                       " is not allowed outside comments and strings");
+    raise(AlarmNumber::BadCharacter, "character " + std::string(hex) + " at column " +
+                                         std::to_string(bad) +
+                                         " is not allowed outside comments and strings");
   }
   Parser p(out, std::string_view(out.buffer.data(), len), limits);
   p.parse();

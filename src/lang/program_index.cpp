@@ -89,7 +89,7 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
     if (!h.label.empty()) {
       std::string name(h.label);
       if (labels_.count(name))
-        throw AlarmError(alarm_no::kSyntaxError, fmt::format("label {} defined twice", name),
+        throw AlarmError(AlarmNumber::SyntaxError, fmt::format("label {} defined twice", name),
                          here.line);
       labels_.emplace(std::move(name), here);
     }
@@ -99,7 +99,7 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
     if (kw == "IF" || kw == "WHILE" || kw == "FOR" || kw == "REPEAT" || kw == "LOOP") {
       if (static_cast<int>(stack.size()) >= max_depth)
         throw AlarmError(
-            alarm_no::kControlDepth,
+            AlarmNumber::ControlDepth,
             fmt::format("nesting depth of control structures exceeded (limit {})", max_depth),
             here.line);
       stack.push_back({staticKeyword(kw), here, {}, false});
@@ -107,7 +107,7 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
     }
     if (kw == "ELSE") {
       if (stack.empty() || stack.back().keyword != "IF" || stack.back().has_else)
-        throw AlarmError(alarm_no::kControlNesting,
+        throw AlarmError(AlarmNumber::ControlNesting,
                          "invalid nesting of control structures: ELSE without IF", here.line);
       stack.back().has_else = true;
       stack.back().else_pos = here;
@@ -116,7 +116,7 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
     if (kw == "ENDIF" || kw == "ENDWHILE" || kw == "ENDFOR" || kw == "UNTIL" || kw == "ENDLOOP") {
       if (stack.empty() || closerOf(stack.back().keyword) != kw)
         throw AlarmError(
-            alarm_no::kControlNesting,
+            AlarmNumber::ControlNesting,
             fmt::format("invalid nesting of control structures: {} {}", kw,
                         stack.empty() ? std::string("without opening statement")
                                       : fmt::format("closes {} of line {}", stack.back().keyword,
@@ -136,7 +136,7 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
   file.releaseAll();
   if (!stack.empty()) {
     const Open& o = stack.back();
-    throw AlarmError(alarm_no::kControlNesting,
+    throw AlarmError(AlarmNumber::ControlNesting,
                      fmt::format("invalid nesting of control structures: {} without {}", o.keyword,
                                  closerOf(o.keyword)),
                      o.pos.line);

@@ -9,7 +9,7 @@ namespace ncoffset::tool {
 namespace {
 
 [[noreturn]] void edgeMissing(int t, int d) {
-  raise(alarm_no::kEdgeNotExisting, fmt::format("T no. = {}, D no. = {} not existing", t, d));
+  raise(AlarmNumber::EdgeNotExisting, fmt::format("T no. = {}, D no. = {} not existing", t, d));
 }
 
 }  // namespace
@@ -17,7 +17,7 @@ namespace {
 int ToolSelection::resolveName(const std::string& name) const {
   int t = tools_.findByName(name);
   if (!t)
-    raise(alarm_no::kToolNotExisting,
+    raise(AlarmNumber::ToolNotExisting,
           fmt::format("T= \"{}\" not existing (no tool with $TC_TP2=\"{}\")", name, name));
   return t;
 }
@@ -26,7 +26,7 @@ void ToolSelection::execute(const ToolWords& w, bool change_on_t, const Selectio
   if (w.tool) {
     int t = *w.tool;
     if (t != 0 && !tools_.tool(t))
-      raise(alarm_no::kToolNotExisting, fmt::format("T= {} not existing", t));
+      raise(AlarmNumber::ToolNotExisting, fmt::format("T= {} not existing", t));
     if (change_on_t)
       changeTool(t, w.edge.has_value(), ctx);
     else

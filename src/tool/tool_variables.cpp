@@ -18,10 +18,10 @@ using lang::Value;
 namespace {
 
 [[noreturn]] void edgeMissing(int t, int d) {
-  raise(alarm_no::kEdgeNotExisting, fmt::format("T no. = {}, D no. = {} not existing", t, d));
+  raise(AlarmNumber::EdgeNotExisting, fmt::format("T no. = {}, D no. = {} not existing", t, d));
 }
 
-int wholeIndex(const Value& v, int lo, int hi, int alarm, const char* what) {
+int wholeIndex(const Value& v, int lo, int hi, AlarmNumber alarm, const char* what) {
   double x = lang::toNumber(v, what);
   if (x != std::floor(x) || x < lo || x > hi)
     raise(alarm, fmt::format("illegal array index: {} {} outside {}..{}", what, x, lo, hi));
@@ -61,17 +61,17 @@ bool parseToolVariable(std::string_view name, std::span<const Value> idx, bool i
   if (k == "TP" || k == "TPC") {
     if (n < 1 || n > 20) return false;
     if (!indexed || idx.size() != 1)
-      raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T]", name));
-    out.t = wholeIndex(idx[0], 1, kMaxTool, alarm_no::kArrayIndex1, "T");
+      raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [T]", name));
+    out.t = wholeIndex(idx[0], 1, kMaxTool, AlarmNumber::ArrayIndex1, "T");
     return true;
   }
   bool edge = (k == "DP" && n >= 1 && n <= 25) || (k == "DPV" && (n == 0 || (n >= 3 && n <= 5))) ||
               (k == "DPVN" && n >= 3 && n <= 5) || (k == "DPC" && n >= 1 && n <= 10);
   if (!edge) return false;
   if (!indexed || idx.size() != 2)
-    raise(alarm_no::kArrayIndex1, fmt::format("{} needs [T,D]", name));
-  out.t = wholeIndex(idx[0], 1, kMaxTool, alarm_no::kArrayIndex1, "T");
-  out.d = wholeIndex(idx[1], 1, kMaxEdge, alarm_no::kArrayIndex2, "D");
+    raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [T,D]", name));
+  out.t = wholeIndex(idx[0], 1, kMaxTool, AlarmNumber::ArrayIndex1, "T");
+  out.d = wholeIndex(idx[1], 1, kMaxEdge, AlarmNumber::ArrayIndex2, "D");
   return true;
 }
 
@@ -97,8 +97,8 @@ bool ToolSelection::read(std::string_view name, std::span<const Value> idx, bool
   }
   if (name == "$P_TOOLL" || name == "$P_TOOLO") {
     if (!indexed || idx.size() != 1)
-      raise(alarm_no::kArrayIndex1, fmt::format("{} needs [1..3]", name));
-    int k = wholeIndex(idx[0], 1, 3, alarm_no::kArrayIndex1, "index");
+      raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [1..3]", name));
+    int k = wholeIndex(idx[0], 1, 3, AlarmNumber::ArrayIndex1, "index");
     if (name == "$P_TOOLL") {
       out = Value::real(lengths().total[static_cast<size_t>(k - 1)]);
     } else {
@@ -112,7 +112,7 @@ bool ToolSelection::read(std::string_view name, std::span<const Value> idx, bool
   const int n = var.n, t = var.t, d = var.d;
   if (kind == "TP" || kind == "TPC") {
     const Tool* tool = tools_.tool(t);
-    if (!tool) raise(alarm_no::kToolNotExisting, fmt::format("T= {} not existing", t));
+    if (!tool) raise(AlarmNumber::ToolNotExisting, fmt::format("T= {} not existing", t));
     if (kind == "TP" && n == 2) {
       auto it = tool->name.find(2);
       out = Value::string(it == tool->name.end() ? std::string() : it->second);
@@ -144,7 +144,7 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
                           const Value& v) {
   if (name == "$P_TOOLNO" || name == "$P_TOOL" || name == "$P_TOOLP" || name == "$P_TOOLR" ||
       name == "$P_TOOLL" || name == "$P_TOOLO")
-    raise(alarm_no::kNameNotDefined, fmt::format("{} can only be read", name));
+    raise(AlarmNumber::NameNotDefined, fmt::format("{} can only be read", name));
   ToolVariable var;
   if (!parseToolVariable(name, idx, indexed, var)) return false;
   const std::string_view kind = var.kind;
@@ -154,7 +154,7 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
     // the value range alarm of an over-long string value (variables.cpp).
     std::string text = lang::toText(v);
     if (text.size() > 200)
-      raise(alarm_no::kValueRange,
+      raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: string of {} characters does not fit STRING[200] "
                         "{}[{}]",
                         text.size(), name, t));
@@ -169,18 +169,18 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
   double x = lang::toNumber(v, "tool parameter");
   if (!(std::fabs(x) <= 1e9) || (kind == "DP" && n == 1 && !(x >= 0 && x <= 9999)) ||
       (kind == "DP" && n == 2 && !(x >= 0 && x <= 9)))
-    raise(alarm_no::kValueRange,
+    raise(AlarmNumber::ValueRange,
           fmt::format("value range exceeded: {}[{},{}] = {}", name, t, d, x));
   if (!tools_.edge(t, d)) {
     if (edges_ >= max_edges_)
-      raise(alarm_no::kTooManyVariables,
+      raise(AlarmNumber::TooManyVariables,
             fmt::format("more than {} cutting edges in the tool offset memory", max_edges_));
     ++edges_;
   }
   EdgeData& e = tools_.edgeForWrite(t, d);
   if (kind == "DP") {
     if ((n == 1 || n == 2) && x != std::floor(x))
-      raise(alarm_no::kValueRange,
+      raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: {} = {} must be whole", name, x));
     e.dp[static_cast<size_t>(n)] = x;
   } else if (kind == "DPV" && n == 0) {
@@ -197,14 +197,14 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
 Value ToolSelection::callLentoax(std::span<const Value> args, const ArrayLookup& array, Plane plane,
                                  const Mat3& frame_linear) const {
   if (args.size() < 2 || args.size() > 3)
-    raise(alarm_no::kWrongCallParams,
+    raise(AlarmNumber::WrongCallParams,
           "wrong number of parameters in call of LENTOAX(_AXIND, _MATRIX[, _COORD])");
   std::span<Value> axind = array(args[0], true, 3, 0, "_AXIND");
   std::span<Value> matrix = array(args[1], false, 3, 3, "_MATRIX");
   std::string coord = "WCS";
   if (args.size() == 3 && args[2].type != Type::Empty) {
     if (args[2].type != Type::String)
-      raise(alarm_no::kWrongCallParams, "LENTOAX: _COORD must be a STRING");
+      raise(AlarmNumber::WrongCallParams, "LENTOAX: _COORD must be a STRING");
     coord = args[2].str;
   }
   std::string upper;

@@ -61,7 +61,7 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
   std::optional<Vec2> t = geom::tangentPoint(p0, p1, r, s, true);
   if (!t)
     throw AlarmError(
-        10755,
+        AlarmNumber::TrcKontSelection,
         "activation of tool radius compensation via KONT not possible in current start point",
         selection_.line);  // the selection block is the one to change
   Element line;
@@ -95,7 +95,8 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   // Deselection with G40 (NORM): the last element ends on its normal at its end point, then a
   // straight line to the programmed end point (details Q1).
   if (m.motion != Motion::G0 && m.motion != Motion::G1)
-    raise(10754, "deactivation of tool radius compensation only possible in linear block");
+    raise(AlarmNumber::TrcDeselectionNotLinear,
+          "deactivation of tool radius compensation only possible in linear block");
   if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   Piece& last = window_.back();
@@ -175,7 +176,7 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
   const double r = std::fabs(last.r1), s = last.side;
   std::optional<Vec2> t = geom::tangentPoint(p2, pe, r, s, false);
   if (!t)
-    raise(10756,
+    raise(AlarmNumber::TrcKontDeselection,
           "deactivation of tool radius compensation via KONT not possible at programmed end point");
   Element line;
   line.p0 = *t;

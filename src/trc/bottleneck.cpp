@@ -87,7 +87,7 @@ void RadiusCompensation::omitAfter(size_t keep, Vec2 at, bool keep_last) {
   const size_t end = keep_last ? window_.size() - 1 : window_.size();
   for (size_t i = keep + 1; i < end; ++i) {
     Piece& p = window_[i];
-    out_.warning(p.block, 10763,
+    out_.warning(p.block, toInt(AlarmNumber::TrcBlockOmitted),
                  "path component of the block in the compensation plane becomes zero: block "
                  "omitted by bottleneck detection of tool radius compensation");
     // Everything but the plane motion runs at the intersection, in program order (Q5).

@@ -30,13 +30,13 @@ inline constexpr double kDiscTolerance = 1e-3;
 inline constexpr long kNoLaterBlock = std::numeric_limits<long>::max() / 2;
 
 [[noreturn]] inline void notModelled(const std::string& what) {
-  raise(alarm_no::kNotModelled,
+  raise(AlarmNumber::NotModelled,
         fmt::format("{} is not modelled by ncoffset yet (tool radius compensation)", what));
 }
 
 // Alarm 10751 (W1 2.4.8, spec §5.6): a junction that no block within MD20240 closes.
 [[noreturn]] inline void collision(int line, int check_blocks) {
-  throw AlarmError(10751,
+  throw AlarmError(AlarmNumber::TrcCollision,
                    fmt::format("danger of collision due to tool radius compensation: no point of "
                                "intersection found within the reviewed {} traversing blocks "
                                "(MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS)",

@@ -106,7 +106,8 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
     const double k = e.ccw ? -s : s;  // the left side of a ccw arc is its inside
     const double ra = r + k * r0, rb = geom::length(e.p1 - e.c) + k * r1;
     if (ra <= kEps || rb <= kEps)
-      raise(10758, "curvature radius with variable compensation value too small");
+      raise(AlarmNumber::TrcCurvatureTooSmall,
+            "curvature radius with variable compensation value too small");
     p.compensated = e;
     p.compensated.p0 = e.c + (ra / r) * (e.p0 - e.c);
     p.compensated.p1 = e.c + (rb / geom::length(e.p1 - e.c)) * (e.p1 - e.c);

@@ -18,7 +18,7 @@ using geom::Element;
 
 void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
   if (m.plane != selection_.plane)
-    raise(10757,
+    raise(AlarmNumber::TrcPlaneChange,
           "change of compensation plane not possible while tool radius compensation is active");
   if (!m.frame.sameAs(selection_.frame))
     detail::notModelled("a frame change while compensation is active");
@@ -27,9 +27,10 @@ void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
 void RadiusCompensation::blockWithoutMotion() {
   if (state_ == State::Off) return;
   if (++dummy_blocks_ > settings_.max_dummy_blocks)
-    raise(10762, fmt::format("too many empty blocks between two traversing blocks with active tool "
-                             "radius compensation (MD20250 = {})",
-                             settings_.max_dummy_blocks));
+    raise(AlarmNumber::TrcTooManyEmptyBlocks,
+          fmt::format("too many empty blocks between two traversing blocks with active tool "
+                      "radius compensation (MD20250 = {})",
+                      settings_.max_dummy_blocks));
 }
 
 core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
@@ -56,7 +57,8 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
 
 void RadiusCompensation::startSelection(const MotionBlock& m) {
   if (m.motion != Motion::G0 && m.motion != Motion::G1)
-    raise(10753, "activation of tool radius compensation only possible in linear block");
+    raise(AlarmNumber::TrcSelectionNotLinear,
+          "activation of tool radius compensation only possible in linear block");
   if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   settings_ = m.trc;
@@ -144,7 +146,9 @@ void RadiusCompensation::flushAll() {
 
 void RadiusCompensation::preprocessorStop(bool alarm) {
   if (state_ == State::Off) return;
-  if (alarm) raise(10778, "preprocessor stop with active tool radius compensation (SD42480 = 1)");
+  if (alarm)
+    raise(AlarmNumber::TrcPreprocessorStop,
+          "preprocessor stop with active tool radius compensation (SD42480 = 1)");
   // "Traversing continues to the offset point in the last block. Correspondingly, the offset
   // point in the start point is approached in the first block after a preprocessing stop."
   // (FM-W1 08/2005 2.4.11). The contour may be violated, as the manual warns.

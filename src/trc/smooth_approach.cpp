@@ -50,7 +50,7 @@ double trcSide(const TrcSettings& t) {
   return t.radius < 0 ? -s : s;
 }
 
-[[noreturn]] void sarAlarm(int number, const std::string& text, int line) {
+[[noreturn]] void sarAlarm(AlarmNumber number, const std::string& text, int line) {
   throw AlarmError(number, text, line);
 }
 
@@ -68,13 +68,14 @@ Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, V
   const double side = trcSide(trc), radius = side != 0 ? std::fabs(trc.radius) : 0.0;
   const Vec2 n = geom::leftNormal(t);
   Shape out;
-  if (!q.has_disr) sarAlarm(10742, "SAR: distance DISR not programmed", s.line);
+  if (!q.has_disr)
+    sarAlarm(AlarmNumber::SarInvalidDistance, "SAR: distance DISR not programmed", s.line);
   if (kind == 1) {
     // The line is the distance of the tool edge: R + DISR (R counted only if positive, details
     // §4.3; PM-F 11/2006 p372).
     const double length = radius + q.disr;
     if (length <= kEps)
-      sarAlarm(10742,
+      sarAlarm(AlarmNumber::SarInvalidDistance,
                fmt::format("SAR: invalid distance DISR={} (with the compensation value {} the "
                            "approach line has no length)",
                            q.disr, radius),
@@ -83,7 +84,8 @@ Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, V
     return out;
   }
   if (q.disr <= kEps)
-    sarAlarm(10742, fmt::format("SAR: invalid distance DISR={} for a circle (must be > 0)", q.disr),
+    sarAlarm(AlarmNumber::SarInvalidDistance,
+             fmt::format("SAR: invalid distance DISR={} for a circle (must be > 0)", q.disr),
              s.line);
   // Side of the circle: G141 left, G142 right, G140 the compensation side (G143 without
   // compensation), G143 the side of the start / end point relative to the tangent at P4.
@@ -99,7 +101,7 @@ Shape construct(const MotionBlock& s, const TrcSettings& trc, Vec2 p4, Vec2 t, V
   // The contour radius that puts the tool centre on a circle of radius DISR.
   const double r = side == 0 ? q.disr : sigma == side ? q.disr + radius : q.disr - radius;
   if (r <= kEps)
-    sarAlarm(10742,
+    sarAlarm(AlarmNumber::SarInvalidDistance,
              fmt::format("SAR: invalid distance DISR={}: the contour circle for the compensation "
                          "value {} has no radius",
                          q.disr, radius),
@@ -133,7 +135,8 @@ void checkMonotonic(std::initializer_list<double> apps, int line) {
     if (std::fabs(d) < kEps) continue;
     const int sd = d > 0 ? 1 : -1;
     if (dir != 0 && sd != dir)
-      sarAlarm(10741, "SAR: direction reversal of the infeed movement", line);
+      sarAlarm(AlarmNumber::SarInfeedReversal, "SAR: direction reversal of the infeed movement",
+               line);
     dir = sd;
   }
 }
@@ -149,7 +152,7 @@ MotionBlock subBlock(const MotionBlock& like, const Vec3& from, const Vec3& to, 
   b.feed = mo == Motion::G0 ? 0 : feed;
   b.has_feed = mo != Motion::G0;
   if (b.has_feed && feed <= 0)
-    raise(alarm_no::kFeedNotProgrammed, "no feedrate programmed (F) for the SAR movement");
+    raise(AlarmNumber::FeedNotProgrammed, "no feedrate programmed (F) for the SAR movement");
   return b;
 }
 
@@ -214,8 +217,8 @@ void SmoothApproach::take(const MotionBlock& m) {
     case State::WaitP4:
     case State::WaitTangent:
       if (m.sar.kind != core::SarKind::None)
-        sarAlarm(10743, "SAR programmed several times: the previous approach is not complete",
-                 m.line);
+        sarAlarm(AlarmNumber::SarProgrammedTwice,
+                 "SAR programmed several times: the previous approach is not complete", m.line);
       if (state_ == State::WaitP4) {
         // The next block with geometry motion supplies P4; the SAR contour runs in it.
         p4_ = m;
@@ -224,7 +227,7 @@ void SmoothApproach::take(const MotionBlock& m) {
       }
       if (!hasPlaneMotion(m)) {  // no tangent yet: an infeed; counts against MD20202 too
         if (static_cast<int>(held_.size()) + held_dummies_ >= sar_.sar.max_dummy_blocks)
-          sarAlarm(10740,
+          sarAlarm(AlarmNumber::SarTooManyBlocks,
                    fmt::format("SAR: too many blocks without plane motion between the SAR block "
                                "and the block that defines the approach direction (MD20202 = {})",
                                sar_.sar.max_dummy_blocks),
@@ -245,14 +248,15 @@ void SmoothApproach::blockWithoutMotion() {
     return;
   }
   if (++held_dummies_ + static_cast<int>(held_.size()) > sar_.sar.max_dummy_blocks)
-    raise(10740, fmt::format("SAR: too many blocks without traversing motion between the SAR block "
-                             "and the block that defines the approach direction (MD20202 = {})",
-                             sar_.sar.max_dummy_blocks));
+    raise(AlarmNumber::SarTooManyBlocks,
+          fmt::format("SAR: too many blocks without traversing motion between the SAR block "
+                      "and the block that defines the approach direction (MD20202 = {})",
+                      sar_.sar.max_dummy_blocks));
 }
 
 void SmoothApproach::preprocessorStop(bool alarm) {
   if (state_ != State::Idle)
-    raise(10746,
+    raise(AlarmNumber::SarPreprocessorStop,
           "SAR: preprocessor stop between the SAR block and the block that defines the "
           "approach direction");
   out_.preprocessorStop(alarm);
@@ -260,7 +264,8 @@ void SmoothApproach::preprocessorStop(bool alarm) {
 
 void SmoothApproach::flush() {
   if (state_ != State::Idle)
-    sarAlarm(10744, "SAR: no valid approach direction: no traversing block follows the SAR block",
+    sarAlarm(AlarmNumber::SarNoDirection,
+             "SAR: no valid approach direction: no traversing block follows the SAR block",
              (p4_ ? *p4_ : sar_).line);
   out_.flush();
 }
@@ -316,8 +321,8 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
 void SmoothApproach::retraction(const MotionBlock& s) {
   const SarRequest& q = s.sar;
   if (!last_)
-    sarAlarm(10744, "SAR: no valid retraction direction: no contour block before the SAR block",
-             s.line);
+    sarAlarm(AlarmNumber::SarNoDirection,
+             "SAR: no valid retraction direction: no contour block before the SAR block", s.line);
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p4 = s.start;
@@ -335,7 +340,7 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   }
   if (!q.plane_axis &&
       (q.side == SarSide::G143 || (q.side == SarSide::G140 && trcSide(active) == 0)))
-    sarAlarm(10747,
+    sarAlarm(AlarmNumber::SarRetractionDirection,
              "SAR: retraction direction not defined: G143 needs the end point in the SAR block",
              s.line);
   Vec3 p0 = s.end;

@@ -125,7 +125,7 @@ TEST(SolveArc, RadiusTooSmallForTheChord) {
   ArcSolution s = solveArc(r);
   expectPoint(s.centre, 5.0025, 0);
   r.end = Vec2{10.1, 0};
-  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+  EXPECT_EQ(alarmOf(r), toInt(AlarmNumber::CircleEndPoint));
 }
 
 TEST(SolveArc, OpeningAngleWithEndPoint) {
@@ -175,9 +175,9 @@ TEST(SolveArc, EndPointTolerance) {
   EXPECT_EQ(alarmOf(r), 0);
   EXPECT_NEAR(solveArc(r).radius, 10, kTol);  // radius from the start point
   r.end = Vec2{0, 10.011};
-  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+  EXPECT_EQ(alarmOf(r), toInt(AlarmNumber::CircleEndPoint));
   r.end = Vec2{0, 9.989};
-  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+  EXPECT_EQ(alarmOf(r), toInt(AlarmNumber::CircleEndPoint));
 
   // Large radius: the factor dominates (0.001 * 100 = 0.1).
   ArcRequest big = request({100, 0}, false);
@@ -185,7 +185,7 @@ TEST(SolveArc, EndPointTolerance) {
   big.end = Vec2{0, -100.09};
   EXPECT_EQ(alarmOf(big), 0);
   big.end = Vec2{0, -100.11};
-  EXPECT_EQ(alarmOf(big), alarm_no::kCircleEndPoint);
+  EXPECT_EQ(alarmOf(big), toInt(AlarmNumber::CircleEndPoint));
 
   // Machine data change the tolerance.
   r.end = Vec2{0, 10.05};
@@ -194,50 +194,50 @@ TEST(SolveArc, EndPointTolerance) {
   r.tol_const = 0.001;
   r.tol_factor = 0;
   r.end = Vec2{0, 10.002};
-  EXPECT_EQ(alarmOf(r), alarm_no::kCircleEndPoint);
+  EXPECT_EQ(alarmOf(r), toInt(AlarmNumber::CircleEndPoint));
 }
 
 TEST(SolveArc, NotDefined14045) {
   ArcRequest none = request({0, 0}, true);
   none.end = Vec2{10, 0};
-  EXPECT_EQ(alarmOf(none), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(none), toInt(AlarmNumber::CircleProgramming));
 
   ArcRequest cr_centre = none;
   cr_centre.cr = 5;
   cr_centre.centre = Vec2{5, 0};
-  EXPECT_EQ(alarmOf(cr_centre), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(cr_centre), toInt(AlarmNumber::CircleProgramming));
 
   ArcRequest cr_ar = none;
   cr_ar.cr = 5;
   cr_ar.ar = 90;
-  EXPECT_EQ(alarmOf(cr_ar), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(cr_ar), toInt(AlarmNumber::CircleProgramming));
 
   ArcRequest ar_centre_end = none;
   ar_centre_end.ar = 90;
   ar_centre_end.centre = Vec2{5, 5};
-  EXPECT_EQ(alarmOf(ar_centre_end), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(ar_centre_end), toInt(AlarmNumber::CircleProgramming));
 
   ArcRequest cr_no_end = request({0, 0}, true);
   cr_no_end.cr = 5;
-  EXPECT_EQ(alarmOf(cr_no_end), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(cr_no_end), toInt(AlarmNumber::CircleProgramming));
 
   ArcRequest cr_full = request({0, 0}, true);
   cr_full.end = Vec2{0, 0};
   cr_full.cr = 5;
-  EXPECT_EQ(alarmOf(cr_full), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(cr_full), toInt(AlarmNumber::CircleProgramming));
 
   ArcRequest cr_zero = none;
   cr_zero.cr = 0;
-  EXPECT_EQ(alarmOf(cr_zero), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(cr_zero), toInt(AlarmNumber::CircleProgramming));
 
   ArcRequest centre_at_start = none;
   centre_at_start.centre = Vec2{0, 0};
-  EXPECT_EQ(alarmOf(centre_at_start), alarm_no::kCircleProgramming);
+  EXPECT_EQ(alarmOf(centre_at_start), toInt(AlarmNumber::CircleProgramming));
 
   for (double ar : {0.0, 360.0, -90.0, 400.0}) {
     ArcRequest bad_ar = none;
     bad_ar.ar = ar;
-    EXPECT_EQ(alarmOf(bad_ar), alarm_no::kCircleProgramming) << ar;
+    EXPECT_EQ(alarmOf(bad_ar), toInt(AlarmNumber::CircleProgramming)) << ar;
   }
 
   ArcRequest ar_full = request({0, 0}, true);

@@ -61,7 +61,7 @@ TEST(MachineData, UnknownOrWrongClass) {
     md.get("$SC_NO_SUCH_DATUM");
     FAIL();
   } catch (const AlarmError& e) {
-    EXPECT_EQ(e.number(), alarm_no::kNameNotDefined);
+    EXPECT_EQ(e.number(), toInt(AlarmNumber::NameNotDefined));
   }
 }
 
@@ -130,23 +130,23 @@ TEST(MachineData, SetWithinRange) {
 
 TEST(MachineData, SetOutOfRange12160) {
   MachineData md;
-  EXPECT_EQ(setAlarm(md, "MD20240", 1), alarm_no::kValueRange);
-  EXPECT_EQ(setAlarm(md, "MD20240", 151), alarm_no::kValueRange);
+  EXPECT_EQ(setAlarm(md, "MD20240", 1), toInt(AlarmNumber::ValueRange));
+  EXPECT_EQ(setAlarm(md, "MD20240", 151), toInt(AlarmNumber::ValueRange));
   EXPECT_EQ(md.get("MD20240"), 3);  // unchanged
-  EXPECT_EQ(setAlarm(md, "SD42900", 2), alarm_no::kValueRange);
-  EXPECT_EQ(setAlarm(md, "MD21000", -0.1), alarm_no::kValueRange);
+  EXPECT_EQ(setAlarm(md, "SD42900", 2), toInt(AlarmNumber::ValueRange));
+  EXPECT_EQ(setAlarm(md, "MD21000", -0.1), toInt(AlarmNumber::ValueRange));
   EXPECT_EQ(setAlarm(md, "SD42940", std::numeric_limits<double>::quiet_NaN()),
-            alarm_no::kValueRange);
+            toInt(AlarmNumber::ValueRange));
   EXPECT_EQ(setAlarm(md, "SD42940", std::numeric_limits<double>::infinity()),
-            alarm_no::kValueRange);
+            toInt(AlarmNumber::ValueRange));
 }
 
 TEST(MachineData, ValuesNotModelled99013) {
   MachineData md;
-  EXPECT_EQ(setAlarm(md, "MD10600", 2), alarm_no::kUnitsOrData);  // Euler angles
-  EXPECT_EQ(setAlarm(md, "SD42935", 1), alarm_no::kUnitsOrData);  // WEAR_TRANSFORM
-  EXPECT_EQ(setAlarm(md, "SD42942", 1), alarm_no::kUnitsOrData);
-  EXPECT_EQ(setAlarm(md, "MD18102", 1), alarm_no::kUnitsOrData);
+  EXPECT_EQ(setAlarm(md, "MD10600", 2), toInt(AlarmNumber::UnitsOrData));  // Euler angles
+  EXPECT_EQ(setAlarm(md, "SD42935", 1), toInt(AlarmNumber::UnitsOrData));  // WEAR_TRANSFORM
+  EXPECT_EQ(setAlarm(md, "SD42942", 1), toInt(AlarmNumber::UnitsOrData));
+  EXPECT_EQ(setAlarm(md, "MD18102", 1), toInt(AlarmNumber::UnitsOrData));
   // Writing the modelled default is accepted.
   EXPECT_EQ(setAlarm(md, "SD42935", 0), 0);
   EXPECT_EQ(setAlarm(md, "MD10600", 1), 0);

@@ -94,7 +94,7 @@ TEST(MotionBuilder, FeedMissingIsAlarm10860) {
     f.builder.build(f.move(1, 0, 0), f.modal, {});
     FAIL();
   } catch (const AlarmError& e) {
-    EXPECT_EQ(e.number(), alarm_no::kFeedNotProgrammed);
+    EXPECT_EQ(e.number(), toInt(AlarmNumber::FeedNotProgrammed));
   }
 }
 

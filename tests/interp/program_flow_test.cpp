@@ -79,7 +79,7 @@ TEST(ProgramFlow, CallAlarms) {
     f.call("NOPE", 1);
     FAIL();
   } catch (const AlarmError& e) {
-    EXPECT_EQ(e.number(), alarm_no::kSubprogramDepth);  // checked before the search
+    EXPECT_EQ(e.number(), toInt(AlarmNumber::SubprogramDepth));  // checked before the search
   }
   ProgramFlow g{Limits{}};
   g.begin(g.load(lang::SourceFile::fromString("MAIN.MPF", "NOPE\n")));
@@ -87,7 +87,7 @@ TEST(ProgramFlow, CallAlarms) {
     g.call("NOPE", 1);
     FAIL();
   } catch (const AlarmError& e) {
-    EXPECT_EQ(e.number(), alarm_no::kProgramNotFound);
+    EXPECT_EQ(e.number(), toInt(AlarmNumber::ProgramNotFound));
   }
 }
 

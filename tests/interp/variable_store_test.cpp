@@ -34,9 +34,9 @@ TEST(VariableStore, RParametersAreRangeChecked) {
   EXPECT_EQ(s.r(99), 2.5);
   EXPECT_TRUE(s.rWritten(99));
   EXPECT_FALSE(s.rWritten(0));
-  EXPECT_EQ(alarmOf([&] { s.r(100); }), alarm_no::kArrayIndex1);
-  EXPECT_EQ(alarmOf([&] { s.r(1.5); }), alarm_no::kArrayIndex1);
-  EXPECT_EQ(alarmOf([&] { s.r(-1); }), alarm_no::kArrayIndex1);
+  EXPECT_EQ(alarmOf([&] { s.r(100); }), toInt(AlarmNumber::ArrayIndex1));
+  EXPECT_EQ(alarmOf([&] { s.r(1.5); }), toInt(AlarmNumber::ArrayIndex1));
+  EXPECT_EQ(alarmOf([&] { s.r(-1); }), toInt(AlarmNumber::ArrayIndex1));
   s.resizeR(200);
   EXPECT_EQ(s.r(99), 2.5);  // kept
   EXPECT_EQ(s.r(199), 0);
@@ -66,14 +66,15 @@ TEST(VariableStore, DefChecksNamesAndLimits) {
   VariableStore s(limits, 10);
   s.beginRun();
   s.add("A1", s.prepare(real("A1", 10)));
-  EXPECT_EQ(alarmOf([&] { s.prepare(real("A1")); }), alarm_no::kAlreadyDefined);
-  EXPECT_EQ(alarmOf([&] { s.prepare(real("R12")); }), alarm_no::kSyntaxError);
-  EXPECT_EQ(alarmOf([&] { s.prepare(real("B", 11)); }), alarm_no::kArrayTooLarge);
-  EXPECT_EQ(alarmOf([&] { s.prepare(real("B", 6)); }), alarm_no::kArrayTooLarge);  // 16 > 15
+  EXPECT_EQ(alarmOf([&] { s.prepare(real("A1")); }), toInt(AlarmNumber::AlreadyDefined));
+  EXPECT_EQ(alarmOf([&] { s.prepare(real("R12")); }), toInt(AlarmNumber::SyntaxError));
+  EXPECT_EQ(alarmOf([&] { s.prepare(real("B", 11)); }), toInt(AlarmNumber::ArrayTooLarge));
+  EXPECT_EQ(alarmOf([&] { s.prepare(real("B", 6)); }),
+            toInt(AlarmNumber::ArrayTooLarge));  // 16 > 15
   s.add("B", s.prepare(real("B", 5)));
   s.pushScope();
   s.add("C", s.prepare(real("C")));
-  EXPECT_EQ(alarmOf([&] { s.prepare(real("D")); }), alarm_no::kTooManyVariables);
+  EXPECT_EQ(alarmOf([&] { s.prepare(real("D")); }), toInt(AlarmNumber::TooManyVariables));
   s.popScope();  // the subprogram's variable is released
   EXPECT_EQ(s.prepare(real("D")).data.size(), 1u);
 }
@@ -86,7 +87,8 @@ TEST(VariableStore, ElementIndexIsRowMajor) {
   std::vector<lang::Value> idx{lang::Value::integer(1), lang::Value::integer(2)};
   EXPECT_EQ(VariableStore::elementIndex(m, idx, "M"), 5u);
   idx[1] = lang::Value::integer(3);
-  EXPECT_EQ(alarmOf([&] { VariableStore::elementIndex(m, idx, "M"); }), alarm_no::kArrayIndex2);
+  EXPECT_EQ(alarmOf([&] { VariableStore::elementIndex(m, idx, "M"); }),
+            toInt(AlarmNumber::ArrayIndex2));
 }
 
 }  // namespace

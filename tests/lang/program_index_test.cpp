@@ -165,47 +165,47 @@ TEST(ProgramIndex, Labels) {
 
 TEST(ProgramIndex, DuplicateLabel) {
   Failure f = failure("LBL: G1 X1\nG1 X2\nLBL: G1 X3\n");
-  EXPECT_EQ(f.number, alarm_no::kSyntaxError);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::SyntaxError));
   EXPECT_EQ(f.line, 3);
 }
 
 TEST(ProgramIndex, InvalidNesting12640) {
   Failure f = failure("G1 X1\nG1 X2\nENDIF\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 3);
 
   f = failure("IF R1\nWHILE R2\nENDIF\nENDWHILE\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 3);
 
   f = failure("G1\nELSE\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 2);
 
   f = failure("IF R1\nELSE\nELSE\nENDIF\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 3);
 
   f = failure("WHILE 1\nELSE\nENDWHILE\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 2);
 
   f = failure("REPEAT\nENDWHILE\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 2);
 
   f = failure("LOOP\nUNTIL R1\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 2);
 }
 
 TEST(ProgramIndex, UnterminatedStructureNamesItsOpeningLine) {
   Failure f = failure("G1 X1\nWHILE R1<3\nG1 X2\nG1 X3\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 2);
 
   f = failure("IF 1\nFOR R1=1 TO 2\nENDFOR\nG1\n");
-  EXPECT_EQ(f.number, alarm_no::kControlNesting);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlNesting));
   EXPECT_EQ(f.line, 1);
 }
 
@@ -219,11 +219,11 @@ std::string nestedIfs(int depth) {
 TEST(ProgramIndex, DepthLimit12641) {
   EXPECT_EQ(failure(nestedIfs(16)).number, 0);
   Failure f = failure(nestedIfs(17));
-  EXPECT_EQ(f.number, alarm_no::kControlDepth);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlDepth));
   EXPECT_EQ(f.line, 17);
 
   f = failure("WHILE 1\nFOR R1=1 TO 2\nLOOP\nENDLOOP\nENDFOR\nENDWHILE\n", 2);
-  EXPECT_EQ(f.number, alarm_no::kControlDepth);
+  EXPECT_EQ(f.number, toInt(AlarmNumber::ControlDepth));
   EXPECT_EQ(f.line, 3);
   // Sequential structures do not add up.
   EXPECT_EQ(failure("IF 1\nENDIF\nIF 1\nENDIF\nIF 1\nENDIF\n", 1).number, 0);

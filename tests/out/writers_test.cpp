@@ -155,8 +155,9 @@ TEST(JsonLinesWriter, SegmentsMessagesAndAlarmRecord) {
   EXPECT_EQ(l[1], R"({"line":2,"file":"dir\\SUB \"1\".SPF","motion":"G2","x":20,"y":0,"z":5,)"
                   R"("cx":15,"cy":0,"cz":5,"normal":[0,0,1],"turns":2,"feed":100})");
   EXPECT_EQ(l[2], R"({"message":"tab\u0009here \"quoted\"","file":"MAIN.MPF","line":3})");
-  EXPECT_EQ(l[3],
-            R"({"alarm":14040,"file":"MAIN.MPF","line":4,"column":0,"text":"error in end point of circle"})");
+  EXPECT_EQ(
+      l[3],
+      R"({"alarm":14040,"file":"MAIN.MPF","line":4,"column":0,"text":"error in end point of circle"})");
 }
 
 TEST(JsonLinesWriter, NoAlarmRecordOnNormalEnd) {

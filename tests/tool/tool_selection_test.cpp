@@ -82,12 +82,12 @@ TEST(ToolSelection, MissingToolAndEdgeGiveTheControlsAlarms) {
   EXPECT_EQ(alarmOf([&] {
               s.execute({2, std::nullopt, false}, true, ctx);
             }),
-            alarm_no::kToolNotExisting);
+            toInt(AlarmNumber::ToolNotExisting));
   s.execute({1, std::nullopt, false}, true, ctx);
   EXPECT_EQ(alarmOf([&] {
               s.execute({std::nullopt, 3, false}, true, ctx);
             }),
-            alarm_no::kEdgeNotExisting);
+            toInt(AlarmNumber::EdgeNotExisting));
 }
 
 TEST(ToolSelection, NoEdgeMeansNoOffset) {
