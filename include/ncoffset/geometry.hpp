@@ -3,8 +3,14 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace ncoffset {
+
+// pi and the degree conversions, the one definition of the tree.
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kRadPerDegree = kPi / 180.0;
+inline constexpr double kDegreePerRad = 180.0 / kPi;
 
 struct Vec3 {
   double x = 0, y = 0, z = 0;

@@ -5,10 +5,11 @@
 #include <cmath>
 
 #include "ncoffset/alarm.hpp"
+#include "ncoffset/geometry.hpp"
 
 namespace ncoffset::geom {
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = kRadPerDegree;
 // Coordinates stay within 1e9 mm (block_executor): the squares cannot overflow, no hypot needed.
 double dist(Vec2 p, Vec2 q) {
   const double a = q.a - p.a, o = q.o - p.o;

@@ -2,9 +2,10 @@
 
 #include <cmath>
 
+#include "ncoffset/geometry.hpp"
+
 namespace ncoffset::geom {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 double angleOf(Vec2 c, Vec2 p) {
   return std::atan2(p.o - c.o, p.a - c.a);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geom/arc.hpp"
+#include "ncoffset/geometry.hpp"
 
 namespace ncoffset::geom {
 
@@ -42,7 +43,7 @@ inline Vec2 unit(Vec2 v) {
 // The angle between two unit vectors in degrees, 0..180: the contour angle that MD20210
 // CUTCOM_CORNER_LIMIT and MD20230 CUTCOM_CURVE_INSERT_LIMIT are compared with (details Q3/Q4).
 inline double angleDeg(Vec2 t1, Vec2 t2) {
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  constexpr double kDeg = kDegreePerRad;
   return std::acos(std::fmax(-1.0, std::fmin(1.0, dot(t1, t2)))) * kDeg;
 }
 

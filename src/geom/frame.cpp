@@ -6,7 +6,7 @@
 
 namespace ncoffset {
 namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = kRadPerDegree;
 
 // Exact values for multiples of 90 degrees keep the geometry free of 1e-17 noise.
 void sinCos(double degrees, double& s, double& c) {

@@ -4,9 +4,7 @@
 #include <cmath>
 
 namespace ncoffset::out {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
+namespace {}  // namespace
 
 Vec3 ArcGeometry::at(double t) const {
   double a = t * sweep;

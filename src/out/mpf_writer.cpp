@@ -16,7 +16,6 @@ void appendCommentText(fmt::memory_buffer& b, std::string_view s) {
   for (char c : s) b.push_back(c == '\n' || c == '\r' ? ' ' : c);
 }
 
-constexpr double kPi = 3.14159265358979323846;
 const char* const kPlaneCode[3] = {"G19", "G18", "G17"};  // by applicate axis X, Y, Z
 
 }  // namespace

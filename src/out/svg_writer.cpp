@@ -5,7 +5,6 @@
 
 namespace ncoffset::out {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kChordStep = kPi / 180;  // polylines: chords of at most 1 degree
 constexpr int kCommandsPerElement = 512;  // a new <path> now and then keeps lines short
 
