@@ -14,7 +14,8 @@
 namespace ncoffset::lang {
 namespace {
 
-// The scans need a character after the text that ends them; std::string has its '\0'.
+// The scans need a character after the text that ends them; std::string has its '\0'. (The
+// result points into `text`: keep it alive where `end` is used.)
 NumberScan scan(const std::string& text) {
   return scanNumber(text.c_str());
 }
@@ -83,10 +84,11 @@ TEST(NumberScan, LongNumbers) {
 }
 
 TEST(NumberScan, Exponent) {
-  NumberScan r = scan("1.5EX3");
+  const std::string whole = "1.5EX3";
+  NumberScan r = scan(whole);
   EXPECT_EQ(r.value, 1500);
   EXPECT_FALSE(r.is_int);
-  EXPECT_EQ(*r.end, '\0');
+  EXPECT_EQ(r.end, whole.c_str() + whole.size());
   EXPECT_DOUBLE_EQ(scan("1EX-3").value, 0.001);
   EXPECT_EQ(scan("2EX+2").value, 200);
   // EX without digits is no exponent: the number ends before it.
