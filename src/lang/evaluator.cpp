@@ -106,6 +106,11 @@ bool realEqual(double a, double b) {
   return std::fabs(a - b) <= 1e-12 * scale;
 }
 
+void Evaluator::DepthGuard::tooDeep() {
+  raise(alarm_no::kExpressionDepth,
+        fmt::format("expression nested deeper than the limit of {}", kMaxExpressionDepth));
+}
+
 double Evaluator::number(const Block& b, int n) {
   return toNumber(eval(b, n));
 }
@@ -148,6 +153,7 @@ Value Evaluator::eval(const Block& b, int n) {
       return env_.readR(node.number);
     case NodeKind::RIndex: {
       if (node.b != 1) raise(alarm_no::kSyntaxError, "R[..] takes one index");
+      const DepthGuard guard(depth_);
       return env_.readR(roundToInt(number(b, b.arg(node, 0))));
     }
     case NodeKind::Name: {
@@ -158,6 +164,7 @@ Value Evaluator::eval(const Block& b, int n) {
       return v;
     }
     case NodeKind::Index: {
+      const DepthGuard guard(depth_);
       std::vector<Value> idx;
       evalArgs(b, node, idx);
       Value v;
@@ -169,11 +176,13 @@ Value Evaluator::eval(const Block& b, int n) {
       if (node.text == "AC" || node.text == "IC")
         raise(alarm_no::kSyntaxError,
               fmt::format("{}(..) is only allowed as the whole value of an address", node.text));
+      const DepthGuard guard(depth_);
       std::vector<Value> args;
       evalArgs(b, node, args);
       return function(node.text, args);
     }
     case NodeKind::Unary: {
+      const DepthGuard guard(depth_);
       Value v = eval(b, node.a);
       switch (node.op) {
         case Op::Neg:
@@ -191,12 +200,44 @@ Value Evaluator::eval(const Block& b, int n) {
       raise(alarm_no::kSyntaxError, "bad unary operator");
     }
     case NodeKind::Binary: {
+      if (b.node(node.a).kind == NodeKind::Binary) return binaryChain(b, n);
+      const DepthGuard guard(depth_);  // the usual `a op b`: no chain to walk
       Value l = eval(b, node.a);
       Value r = eval(b, node.b);
       return binary(node.op, l, r);
     }
   }
   raise(alarm_no::kSyntaxError, "bad expression");
+}
+
+// A chain of left-associative operators (1+2+3 is ((1+2)+3)) is as deep as it is long, and a
+// block of 65,536 characters holds 30,000 of them: the left operands are walked in a loop, not
+// by recursion, in the order recursion would take (leftmost operand first, then each right
+// operand and its operator). Right operands, unary operands and arguments recurse; the parser
+// bounds their nesting (ParseLimits::max_expression_depth).
+Value Evaluator::binaryChain(const Block& b, int n) {
+  const DepthGuard guard(depth_);
+  constexpr int kShort = 16;  // the usual chain; longer ones continue in `spine_long`
+  int spine_short[kShort];
+  std::vector<int> spine_long;
+  int count = 0;
+  int leaf = n;
+  for (; b.node(leaf).kind == NodeKind::Binary; leaf = b.node(leaf).a, ++count) {
+    if (count < kShort) {
+      spine_short[count] = leaf;
+    } else {
+      if (count == kShort) spine_long.assign(spine_short, spine_short + kShort);
+      spine_long.push_back(leaf);
+    }
+  }
+  const int* spine = count <= kShort ? spine_short : spine_long.data();
+  Value left = eval(b, leaf);
+  for (int k = count - 1; k >= 0; --k) {
+    const Node& node = b.node(spine[k]);
+    Value right = eval(b, node.b);
+    left = binary(node.op, left, right);
+  }
+  return left;
 }
 
 Value Evaluator::binary(Op op, const Value& l, const Value& r) {

@@ -11,8 +11,11 @@
 #include "lang/block_parser.hpp"
 #include "lang/line_normalize.hpp"
 #include "ncoffset/alarm.hpp"
+#include "ncoffset/channel.hpp"
 
 namespace ncoffset::lang {
+
+static_assert(kMaxExpressionDepth == Limits::kMaxExpressionDepth);
 
 void Parser::syntax(const std::string& what) const {
   std::string near(s_.substr(i_ < s_.size() ? i_ : s_.size(), 24));
@@ -66,7 +69,10 @@ bool Parser::parseWritten() {
   return simpleWords();
 }
 
-void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& limits) {
+void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& requested) {
+  ParseLimits limits = requested;
+  if (limits.max_expression_depth > kMaxExpressionDepth)
+    limits.max_expression_depth = kMaxExpressionDepth;  // what the stack allows
   out.clear();
   out.line = line;
   // Most blocks of CAM programs (N10 G1 X10.5 Y2 F1000) are plain upper-case words, which

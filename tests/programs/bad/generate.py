@@ -130,3 +130,52 @@ write("binary_garbage.MPF", garbage)
 # A subprogram of binary garbage, called by sub_garbage.MPF.
 rng = random.Random(7)
 write("GARBAGE_SUB.SPF", bytes([0x80]) + bytes(rng.randrange(256) for _ in range(1023)))
+
+# Operator chains as long as the default --max-line-length 65536 allows (issue 14, item 1): a
+# left-associative chain builds a tree as deep as it is long, which the evaluator walks in a
+# loop; these crashed with a stack overflow before.
+LIMIT = 65536
+
+
+def chain(prefix, op_operand, suffix=""):
+    """prefix + op_operand repeated, + suffix, exactly LIMIT characters (pads with blanks)."""
+    n = (LIMIT - len(prefix) - len(suffix)) // len(op_operand)
+    text = prefix + op_operand * n + suffix
+    return text + " " * (LIMIT - len(text))
+
+
+write("chain_plus_assign.MPF",
+      "; Checks: R1=1+1+...+1 with 32766 '+' in a block of exactly 65536 characters (the default\n"
+      "; --max-line-length) evaluates: R1 = 32767; row line 5 X32767. Status 0.\n"
+      "G90 G1 X1 F100\n" + chain("R1=1", "+1") + "\n" + "G1 X=R1\nM30\n")
+
+write("chain_minus_axis.MPF",
+      "; Checks: an axis word G1 F100 X=1-0-0-...-0 of exactly 65536 characters evaluates:\n"
+      "; X = 1; row line 3 X1 F100. Status 0.\n" + chain("G90 G1 F100 X=1", "-0") + "\n" +
+      "M30\n")
+
+write("chain_mul_if.MPF",
+      "; Checks: an IF condition 1*1*...*1==1 of exactly 65536 characters evaluates (TRUE):\n"
+      "; row line 5 X2 inside the IF. Status 0.\n"
+      "G90 G1 X1 F100\n" + chain("IF 1", "*1", "==1") + "\n" + "G1 X2\nENDIF\nM30\n")
+
+write("CHAIN_DP6.INI",
+      "; Init file of chain_init: the radius $TC_DP6[1,1]=0+0+...+0+5 in one block of exactly\n"
+      "; 65536 characters.\n"
+      "CHANDATA(1)\n$TC_DP1[1,1]=120\n" + chain("$TC_DP6[1,1]=0", "+0", "+5") + "\nM17\n")
+
+write("chain_init.MPF",
+      "; Checks: an init file whose $TC_DP6[1,1]=0+0+...+5 fills the default line limit (65536\n"
+      "; characters) sets the radius 5: R1=$TC_DP6[1,1] gives X5 (row line 5). Status 0.\n"
+      "T1 D1\nR1=$TC_DP6[1,1]\nG90 G1 X=R1 F100\nM30\n")
+
+# Nesting at and beyond the largest --max-expression-depth (1000, Limits::kMaxExpressionDepth).
+write("depth_limit_1000.MPF",
+      "; Checks: --max-expression-depth 1000 (the largest allowed): 999 nested parentheses are\n"
+      "; 1000 levels with the expression itself and evaluate (R1 = 7, row line 6 X7); 1000\n"
+      "; nested ABS( are 1001 levels: alarm 99003 naming the limit 1000 at line 7. Status 2.\n"
+      "G90 G1 X1 F100\n"
+      "R1=" + "(" * 999 + "7" + ")" * 999 + "\n"
+      "G1 X=R1\n"
+      "R2=" + "ABS(" * 1000 + "1" + ")" * 1000 + "\n"
+      "G1 X=R2\nM30\n")
