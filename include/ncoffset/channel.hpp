@@ -26,7 +26,7 @@ struct Limits {
   size_t max_tool_edges = 32000;        // cutting edges in the tool offset memory
 
   // The largest values the two limits may take (docs/limits.md): the parser and the evaluator
-  // recurse once per nesting level (at this depth about 0.6 MB of stack, 1.9 MB under
+  // recurse once per nesting level (at this depth about 0.7 MB of stack, 1.9 MB under
   // AddressSanitizer), and one block's expression nodes grow with its length. Channel clamps
   // larger values to these; the command line refuses them.
   static constexpr int kMaxExpressionDepth = 1000;

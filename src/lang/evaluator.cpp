@@ -304,94 +304,112 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
   raise(alarm_no::kSyntaxError, "bad operator");
 }
 
-Value Evaluator::function(std::string_view name, std::span<const Value> args) {
-  auto want = [&](size_t n) {
+namespace {
+
+// The arguments of a predefined function, with the checks every function makes.
+struct FunctionArgs {
+  std::string_view name;
+  std::span<const Value> args;
+
+  void want(size_t n) const {
     if (args.size() != n)
       raise(alarm_no::kWrongCallParams,
             fmt::format("wrong number of parameters in call of {}: {} expected, {} given", name, n,
                         args.size()));
-  };
-  auto arg = [&](size_t k) { return toNumber(args[k], "function argument"); };
-  auto domain = [&](bool ok) {
+  }
+  double arg(size_t k) const { return toNumber(args[k], "function argument"); }
+  void domain(bool ok) const {
     if (!ok)
       raise(alarm_no::kArithmetic,
             fmt::format("arithmetic error in part program: argument of {} out of range", name));
-  };
-  auto real = [&](double v) { return numeric(Type::Real, v, std::string(name).c_str()); };
+  }
+  Value real(double v) const { return numeric(Type::Real, v, std::string(name).c_str()); }
+};
+
+// SIN, COS, TAN, ASIN, ACOS, ATAN2 (degrees, PM-NC "Arithmetic functions"); false if `f` is
+// none of them.
+bool trigonometric(const FunctionArgs& f, Value& out) {
+  const std::string_view name = f.name;
   if (name == "SIN") {
-    want(1);
-    return real(std::sin(arg(0) * kDeg));
+    f.want(1);
+    out = f.real(std::sin(f.arg(0) * kDeg));
+  } else if (name == "COS") {
+    f.want(1);
+    out = f.real(std::cos(f.arg(0) * kDeg));
+  } else if (name == "TAN") {
+    f.want(1);
+    double x = std::fmod(f.arg(0), 180.0);
+    f.domain(std::fabs(std::fabs(x) - 90.0) > 1e-12);
+    out = f.real(std::tan(f.arg(0) * kDeg));
+  } else if (name == "ASIN") {
+    f.want(1);
+    f.domain(std::fabs(f.arg(0)) <= 1);
+    out = f.real(std::asin(f.arg(0)) / kDeg);
+  } else if (name == "ACOS") {
+    f.want(1);
+    f.domain(std::fabs(f.arg(0)) <= 1);
+    out = f.real(std::acos(f.arg(0)) / kDeg);
+  } else if (name == "ATAN2") {
+    f.want(2);
+    f.domain(f.arg(0) != 0 || f.arg(1) != 0);
+    out = f.real(std::atan2(f.arg(0), f.arg(1)) / kDeg);
+  } else {
+    return false;
   }
-  if (name == "COS") {
-    want(1);
-    return real(std::cos(arg(0) * kDeg));
-  }
-  if (name == "TAN") {
-    want(1);
-    double x = std::fmod(arg(0), 180.0);
-    domain(std::fabs(std::fabs(x) - 90.0) > 1e-12);
-    return real(std::tan(arg(0) * kDeg));
-  }
-  if (name == "ASIN") {
-    want(1);
-    domain(std::fabs(arg(0)) <= 1);
-    return real(std::asin(arg(0)) / kDeg);
-  }
-  if (name == "ACOS") {
-    want(1);
-    domain(std::fabs(arg(0)) <= 1);
-    return real(std::acos(arg(0)) / kDeg);
-  }
-  if (name == "ATAN2") {
-    want(2);
-    domain(arg(0) != 0 || arg(1) != 0);
-    return real(std::atan2(arg(0), arg(1)) / kDeg);
-  }
+  return true;
+}
+
+// SQRT, ABS, POT, TRUNC, ROUND, ROUNDUP, EXP, LN, MINVAL, MAXVAL, STRLEN; false if `f` is none
+// of them.
+bool arithmetic(const FunctionArgs& f, Value& out) {
+  const std::string_view name = f.name;
   if (name == "SQRT") {
-    want(1);
-    domain(arg(0) >= 0);
-    return real(std::sqrt(arg(0)));
-  }
-  if (name == "ABS") {
-    want(1);
-    return numeric(args[0].type == Type::Int ? Type::Int : Type::Real, std::fabs(arg(0)), "ABS");
-  }
-  if (name == "POT") {
-    want(1);
-    return real(arg(0) * arg(0));
-  }
-  if (name == "TRUNC") {
-    want(1);
-    return real(std::trunc(arg(0)));
-  }
-  if (name == "ROUND") {
-    want(1);
-    return real(std::round(arg(0)));
-  }
-  if (name == "ROUNDUP") {
-    want(1);
-    return real(std::ceil(arg(0)));
-  }
-  if (name == "EXP") {
-    want(1);
-    return real(std::exp(arg(0)));
-  }
-  if (name == "LN") {
-    want(1);
-    domain(arg(0) > 0);
-    return real(std::log(arg(0)));
-  }
-  if (name == "MINVAL" || name == "MAXVAL") {
-    want(2);
-    double a = arg(0), c = arg(1);
-    bool ints = args[0].type == Type::Int && args[1].type == Type::Int;
+    f.want(1);
+    f.domain(f.arg(0) >= 0);
+    out = f.real(std::sqrt(f.arg(0)));
+  } else if (name == "ABS") {
+    f.want(1);
+    out = numeric(f.args[0].type == Type::Int ? Type::Int : Type::Real, std::fabs(f.arg(0)), "ABS");
+  } else if (name == "POT") {
+    f.want(1);
+    out = f.real(f.arg(0) * f.arg(0));
+  } else if (name == "TRUNC") {
+    f.want(1);
+    out = f.real(std::trunc(f.arg(0)));
+  } else if (name == "ROUND") {
+    f.want(1);
+    out = f.real(std::round(f.arg(0)));
+  } else if (name == "ROUNDUP") {
+    f.want(1);
+    out = f.real(std::ceil(f.arg(0)));
+  } else if (name == "EXP") {
+    f.want(1);
+    out = f.real(std::exp(f.arg(0)));
+  } else if (name == "LN") {
+    f.want(1);
+    f.domain(f.arg(0) > 0);
+    out = f.real(std::log(f.arg(0)));
+  } else if (name == "MINVAL" || name == "MAXVAL") {
+    f.want(2);
+    double a = f.arg(0), c = f.arg(1);
+    bool ints = f.args[0].type == Type::Int && f.args[1].type == Type::Int;
     double v = name == "MINVAL" ? std::min(a, c) : std::max(a, c);
-    return numeric(ints ? Type::Int : Type::Real, v, "MINVAL/MAXVAL");
+    out = numeric(ints ? Type::Int : Type::Real, v, "MINVAL/MAXVAL");
+  } else if (name == "STRLEN") {
+    f.want(1);
+    out = Value::integer(static_cast<double>(toText(f.args[0]).size()));
+  } else {
+    return false;
   }
-  if (name == "STRLEN") {
-    want(1);
-    return Value::integer(static_cast<double>(toText(args[0]).size()));
-  }
+  return true;
+}
+
+}  // namespace
+
+Value Evaluator::function(std::string_view name, std::span<const Value> args) {
+  const FunctionArgs f{name, args};
+  Value v;
+  if (trigonometric(f, v) || arithmetic(f, v)) return v;
   return env_.call(name, args);
 }
 

@@ -10,7 +10,7 @@
 namespace ncoffset::lang {
 
 // The deepest nesting any caller may allow (Limits::kMaxExpressionDepth): the parser and the
-// evaluator recurse once per level, and at this depth they use about 0.6 MB of stack (1.9 MB
+// evaluator recurse once per level, and at this depth they use about 0.7 MB of stack (1.9 MB
 // under AddressSanitizer; docs/limits.md). parseBlock clamps larger limits to it.
 inline constexpr int kMaxExpressionDepth = 1000;
 
