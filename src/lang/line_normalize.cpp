@@ -1,5 +1,5 @@
 // Line normalisation (lang/line_normalize.hpp): upper case outside strings, the comment cut,
-// tab, CR, FF and VT as blanks, and the check that nothing but printable ASCII stands outside
+// tabs as blanks, and the check that nothing but printable ASCII stands outside
 // comments and strings (alarm 99011 in parseBlock). Plain lines are copied eight bytes at a
 // time: most blocks of CAM programs are already upper case and need no change.
 #include "lang/line_normalize.hpp"
@@ -12,7 +12,7 @@
 namespace ncoffset::lang {
 namespace {
 // Byte classes for normalizeLine: 0 = not allowed outside strings/comments, 1 = copy as is,
-// 2 = ';' (comment starts), 3 = '"' (string starts), 4 = white space to blank.
+// 2 = ';' (comment starts), 3 = '"' (string starts), 4 = tab, to blank.
 struct ByteTable {
   unsigned char cls[256];
   char upper[256];
@@ -23,10 +23,10 @@ struct ByteTable {
     }
     cls[static_cast<int>(';')] = 2;
     cls[static_cast<int>('"')] = 3;
-    for (int c : {'\t', '\r', '\f', '\v'}) {
-      cls[c] = 4;
-      upper[c] = ' ';
-    }
+    // A tab is a blank. CR, FF and VT are not: a CR that ends a line never gets here (nextLine
+    // takes it with the LF), and one inside a line would make two lines of one for the reader.
+    cls[static_cast<int>('\t')] = 4;
+    upper[static_cast<int>('\t')] = ' ';
   }
 };
 constexpr ByteTable kBytes;

@@ -69,6 +69,26 @@ bool Parser::parseWritten() {
   return simpleWords();
 }
 
+namespace {
+
+// The name of a control byte that programs written on other systems hold by mistake.
+const char* byteName(unsigned char c) {
+  switch (c) {
+    case 0x00:
+      return " (NUL)";
+    case 0x0B:
+      return " (vertical tab)";
+    case 0x0C:
+      return " (form feed)";
+    case 0x0D:
+      return " (carriage return not followed by a line feed)";
+    default:
+      return "";
+  }
+}
+
+}  // namespace
+
 void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& requested) {
   ParseLimits limits = requested;
   if (limits.max_expression_depth > kMaxExpressionDepth)
@@ -96,7 +116,7 @@ void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& 
     unsigned char c = static_cast<unsigned char>(text[static_cast<size_t>(bad - 1)]);
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", c);
-    raise(alarm_no::kBadCharacter, "character " + std::string(hex) + " at column " +
+    raise(alarm_no::kBadCharacter, "character " + std::string(hex) + byteName(c) + " at column " +
                                        std::to_string(bad) +
                                        " is not allowed outside comments and strings");
   }

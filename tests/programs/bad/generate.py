@@ -179,3 +179,21 @@ write("depth_limit_1000.MPF",
       "G1 X=R1\n"
       "R2=" + "ABS(" * 1000 + "1" + ")" * 1000 + "\n"
       "G1 X=R2\nM30\n")
+
+# A CR inside a line (issue 14, item 7): not a blank and not a line end (only CR LF is), so
+# "G1 X10 F100<CR>Y10<CR>Z-5<CR><LF>" is no diagonal move but alarm 99011 naming the byte.
+write("cr_inside_line.MPF",
+      b"; Checks: a lone CR inside a block on line 5 (G1 X10 F100<CR>Y10<CR>Z-5<CR><LF>): the\n"
+      b"; reader ends lines at LF and takes a CR only directly before it, so the first CR (column\n"
+      b"; 12) is alarm 99011 - it used to be a blank and made one diagonal move. Row: line 4.\n"
+      b"G90 G1 X1 F100\r\n"
+      b"G1 X10 F100\rY10\rZ-5\r\n"
+      b"M30\r\n")
+
+# A form feed inside a line: alarm 99011 as well.
+write("form_feed_inside_line.MPF",
+      b"; Checks: a form feed (0x0C) between two words on line 4: alarm 99011 at line 4 (it\n"
+      b"; used to be taken as a blank). Row: line 3 X1. Status 2.\n"
+      b"G90 G1 X1 F100\n"
+      b"G1 X2\x0cY2\n"
+      b"M30\n")
