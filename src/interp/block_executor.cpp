@@ -145,6 +145,10 @@ void Interpreter::collectWord(const Stmt& st) {
         double l = value();
         if (l < 0 || l != std::floor(l) || l > 999999999 || st.has_equals)
           raise(alarm_no::kSyntaxError, "L must be followed by a program number (0..999999999)");
+        if (!words_.call.empty())
+          raise(alarm_no::kNameNotDefined,
+                fmt::format("name {} not defined (a block calls one subprogram; L{} follows)",
+                            words_.call, static_cast<long long>(l)));
         call_name_ = fmt::format("L{}", static_cast<long long>(l));
         words_.call = call_name_;
         return;
@@ -462,6 +466,10 @@ void Interpreter::namedWord(const Stmt& st) {
                "TRAORI", "TRANSMIT", "TRACYL",  "TRAANG",  "ROTS",    "AROTS", "CROTS",  "MOVT",
                "INVCW",  "INVCCW",   "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL",  "PCALL",  "MCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
+  if (!words_.call.empty())  // every word is read: a second call would drop the first name
+    raise(alarm_no::kNameNotDefined,
+          fmt::format("name {} not defined (a block calls one subprogram; {} follows)", words_.call,
+                      w));
   words_.call = w;
 }
 

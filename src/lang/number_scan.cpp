@@ -26,7 +26,11 @@ void applyExponent(NumberScan& r) {
   const char* p = r.end + 2;  // EX
   bool negative = false;
   if (*p == '-' || *p == '+') negative = *p++ == '-';
-  if (!isDigit(*p)) return;  // no exponent: EX is the next word
+  if (!isDigit(*p)) {  // 1EX alone is no number, and no number followed by a word EX
+    r.error = "number format: EX without its exponent (1.5EX3 = 1500)";
+    r.error_at = r.end;
+    return;
+  }
   long long e = 0;
   int digits = 0;
   while (isDigit(*p)) {

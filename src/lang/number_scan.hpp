@@ -71,8 +71,8 @@ void convertLongNumber(const char* begin, const DecimalDigits& d, NumberScan& r)
 void applyExponent(NumberScan& r);
 
 // An unsigned decimal number at `p` with an optional exponent: `EX` with an optional sign and
-// digits (`EX` without digits is left for the caller: it is not part of the number). At most 20
-// digits (21 characters with the point).
+// digits (`EX` directly after the digits without them is an error: every character of a block
+// must be read as something). At most 20 digits (21 characters with the point).
 inline NumberScan scanNumber(const char* p) {
   NumberScan r;
   const DecimalDigits d = scanDigits(p);

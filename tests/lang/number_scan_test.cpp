@@ -91,13 +91,12 @@ TEST(NumberScan, Exponent) {
   EXPECT_EQ(r.end, whole.c_str() + whole.size());
   EXPECT_DOUBLE_EQ(scan("1EX-3").value, 0.001);
   EXPECT_EQ(scan("2EX+2").value, 200);
-  // EX without digits is no exponent: the number ends before it.
-  const std::string text = "5EXY";
-  r = scan(text);
-  EXPECT_EQ(r.error, nullptr);
-  EXPECT_EQ(r.value, 5);
-  EXPECT_TRUE(r.is_int);
-  EXPECT_EQ(r.end, text.c_str() + 1);
+  // EX without digits is no number (issue 14, item 6: 1EX followed by a call of EX.SPF).
+  for (const std::string text : {"5EX", "5EXY", "5EX-", "1.5EX+ 3"}) {
+    r = scan(text);
+    EXPECT_STREQ(r.error, "number format: EX without its exponent (1.5EX3 = 1500)") << text;
+    EXPECT_EQ(r.error_at, text.c_str() + text.find('E')) << text;
+  }
   EXPECT_STREQ(scan("1EX400").error, "number out of range");
   EXPECT_EQ(scan("1EX-400").value, 0);
   const std::string long_exponent = "1EX1234567890123456789";

@@ -691,6 +691,15 @@ TEST(Parser, SyntaxErrorsRaise12080) {
   for (const char* text : broken) EXPECT_EQ(parseAlarm(text), alarm_no::kSyntaxError) << text;
 }
 
+// EX directly after a number is its exponent or an error, never the next word (issue 14, item
+// 6: `R1=1EX` used to be R1=1 and a call of EX.SPF).
+TEST(Parser, ExWithoutExponentIsASyntaxError) {
+  for (const char* text : {"R1=1EX", "G1 X1EX F100", "X1EX", "CR=5EX", "R1=2*1.5EX+", "X1EXY"})
+    EXPECT_EQ(parseAlarm(text), alarm_no::kSyntaxError) << text;
+  EXPECT_EQ(parseAlarm("G1 X1EX2 F100"), 0);
+  EXPECT_EQ(parseAlarm("G1 X1 EXX"), 0);  // a name after a blank is a word of its own
+}
+
 TEST(Parser, AddressWithoutValueIsASyntaxError) {
   // A lone address letter has no value. It cannot be a subprogram call either: only names that
   // start with two letters (or _ and a letter) can be called by name (PM-NC 12/2019 p491).
