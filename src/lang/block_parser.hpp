@@ -146,6 +146,7 @@ class Parser {
   void caseArms();
   void definition(int col);
   void declarator(VarType type, int string_length);
+  void checkVariableName(std::string_view name, size_t at);
   void arrayInitialiser(Decl& d);
 };
 
