@@ -164,6 +164,10 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
       double l = value();
       if (l < 0 || l != std::floor(l) || l > 999999999 || st.has_equals)
         raise(AlarmNumber::SyntaxError, "L must be followed by a program number (0..999999999)");
+      if (!words_.call.empty())
+        raise(AlarmNumber::NameNotDefined,
+              fmt::format("name {} not defined (a block calls one subprogram; L{} follows)",
+                          words_.call, static_cast<long long>(l)));
       call_name_ = fmt::format("L{}", static_cast<long long>(l));
       words_.call = call_name_;
       return;

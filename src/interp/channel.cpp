@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "interp/interpreter.hpp"
 #include "place/placement.hpp"
 #include "trc/radius_compensation.hpp"
@@ -56,7 +58,12 @@ struct Channel::Impl {
   }
 };
 
-Channel::Channel(RunOptions options) : impl_(std::make_unique<Impl>(options)) {}
+Channel::Channel(RunOptions options) {
+  Limits& l = options.limits;  // what the stack and memory allow (docs/limits.md)
+  l.max_expression_depth = std::min(l.max_expression_depth, Limits::kMaxExpressionDepth);
+  l.max_line_length = std::min(l.max_line_length, Limits::kMaxLineLength);
+  impl_ = std::make_unique<Impl>(options);
+}
 Channel::~Channel() = default;
 
 static RunResult fileError(const std::filesystem::path& file, const std::string& why) {

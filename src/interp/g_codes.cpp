@@ -306,6 +306,10 @@ void Interpreter::namedWord(const Stmt& st) {
                "TRAORI", "TRANSMIT", "TRACYL",  "TRAANG",  "ROTS",    "AROTS", "CROTS",  "MOVT",
                "INVCW",  "INVCCW",   "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL",  "PCALL",  "MCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
+  if (!words_.call.empty())  // every word is read: a second call would drop the first name
+    raise(AlarmNumber::NameNotDefined,
+          fmt::format("name {} not defined (a block calls one subprogram; {} follows)", words_.call,
+                      w));
   words_.call = w;
 }
 

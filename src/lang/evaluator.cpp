@@ -6,11 +6,12 @@
 #include <limits>
 
 #include "ncoffset/alarm.hpp"
+#include "ncoffset/geometry.hpp"
 
 namespace ncoffset::lang {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = kRadPerDegree;
 constexpr double kIntMax = 2147483647.0;
 
 void checkFinite(double v, const char* what) {
@@ -106,6 +107,11 @@ bool realEqual(double a, double b) {
   return std::fabs(a - b) <= 1e-12 * scale;
 }
 
+void Evaluator::DepthGuard::tooDeep() {
+  raise(AlarmNumber::ExpressionDepth,
+        fmt::format("expression nested deeper than the limit of {}", kMaxExpressionDepth));
+}
+
 double Evaluator::number(const Block& b, int n) {
   return toNumber(eval(b, n));
 }
@@ -148,6 +154,7 @@ Value Evaluator::eval(const Block& b, int n) {
       return env_.readR(node.number);
     case NodeKind::RIndex: {
       if (node.b != 1) raise(AlarmNumber::SyntaxError, "R[..] takes one index");
+      const DepthGuard guard(depth_);
       return env_.readR(roundToInt(number(b, b.arg(node, 0))));
     }
     case NodeKind::Name: {
@@ -158,6 +165,7 @@ Value Evaluator::eval(const Block& b, int n) {
       return v;
     }
     case NodeKind::Index: {
+      const DepthGuard guard(depth_);
       std::vector<Value> idx;
       evalArgs(b, node, idx);
       Value v;
@@ -169,11 +177,13 @@ Value Evaluator::eval(const Block& b, int n) {
       if (node.text == "AC" || node.text == "IC")
         raise(AlarmNumber::SyntaxError,
               fmt::format("{}(..) is only allowed as the whole value of an address", node.text));
+      const DepthGuard guard(depth_);
       std::vector<Value> args;
       evalArgs(b, node, args);
       return function(node.text, args);
     }
     case NodeKind::Unary: {
+      const DepthGuard guard(depth_);
       Value v = eval(b, node.a);
       switch (node.op) {
         case Op::Neg:
@@ -191,12 +201,44 @@ Value Evaluator::eval(const Block& b, int n) {
       raise(AlarmNumber::SyntaxError, "bad unary operator");
     }
     case NodeKind::Binary: {
+      if (b.node(node.a).kind == NodeKind::Binary) return binaryChain(b, n);
+      const DepthGuard guard(depth_);  // the usual `a op b`: no chain to walk
       Value l = eval(b, node.a);
       Value r = eval(b, node.b);
       return binary(node.op, l, r);
     }
   }
   raise(AlarmNumber::SyntaxError, "bad expression");
+}
+
+// A chain of left-associative operators (1+2+3 is ((1+2)+3)) is as deep as it is long, and a
+// block of 65,536 characters holds 30,000 of them: the left operands are walked in a loop, not
+// by recursion, in the order recursion would take (leftmost operand first, then each right
+// operand and its operator). Right operands, unary operands and arguments recurse; the parser
+// bounds their nesting (ParseLimits::max_expression_depth).
+Value Evaluator::binaryChain(const Block& b, int n) {
+  const DepthGuard guard(depth_);
+  constexpr int kShort = 16;  // the usual chain; longer ones continue in `spine_long`
+  int spine_short[kShort];
+  std::vector<int> spine_long;
+  int count = 0;
+  int leaf = n;
+  for (; b.node(leaf).kind == NodeKind::Binary; leaf = b.node(leaf).a, ++count) {
+    if (count < kShort) {
+      spine_short[count] = leaf;
+    } else {
+      if (count == kShort) spine_long.assign(spine_short, spine_short + kShort);
+      spine_long.push_back(leaf);
+    }
+  }
+  const int* spine = count <= kShort ? spine_short : spine_long.data();
+  Value left = eval(b, leaf);
+  for (int k = count - 1; k >= 0; --k) {
+    const Node& node = b.node(spine[k]);
+    Value right = eval(b, node.b);
+    left = binary(node.op, left, right);
+  }
+  return left;
 }
 
 Value Evaluator::binary(Op op, const Value& l, const Value& r) {
@@ -263,94 +305,112 @@ Value Evaluator::binary(Op op, const Value& l, const Value& r) {
   raise(AlarmNumber::SyntaxError, "bad operator");
 }
 
-Value Evaluator::function(std::string_view name, std::span<const Value> args) {
-  auto want = [&](size_t n) {
+namespace {
+
+// The arguments of a predefined function, with the checks every function makes.
+struct FunctionArgs {
+  std::string_view name;
+  std::span<const Value> args;
+
+  void want(size_t n) const {
     if (args.size() != n)
       raise(AlarmNumber::WrongCallParams,
             fmt::format("wrong number of parameters in call of {}: {} expected, {} given", name, n,
                         args.size()));
-  };
-  auto arg = [&](size_t k) { return toNumber(args[k], "function argument"); };
-  auto domain = [&](bool ok) {
+  }
+  double arg(size_t k) const { return toNumber(args[k], "function argument"); }
+  void domain(bool ok) const {
     if (!ok)
       raise(AlarmNumber::Arithmetic,
             fmt::format("arithmetic error in part program: argument of {} out of range", name));
-  };
-  auto real = [&](double v) { return numeric(Type::Real, v, std::string(name).c_str()); };
+  }
+  Value real(double v) const { return numeric(Type::Real, v, std::string(name).c_str()); }
+};
+
+// SIN, COS, TAN, ASIN, ACOS, ATAN2 (degrees, PM-NC "Arithmetic functions"); false if `f` is
+// none of them.
+bool trigonometric(const FunctionArgs& f, Value& out) {
+  const std::string_view name = f.name;
   if (name == "SIN") {
-    want(1);
-    return real(std::sin(arg(0) * kDeg));
+    f.want(1);
+    out = f.real(std::sin(f.arg(0) * kDeg));
+  } else if (name == "COS") {
+    f.want(1);
+    out = f.real(std::cos(f.arg(0) * kDeg));
+  } else if (name == "TAN") {
+    f.want(1);
+    double x = std::fmod(f.arg(0), 180.0);
+    f.domain(std::fabs(std::fabs(x) - 90.0) > 1e-12);
+    out = f.real(std::tan(f.arg(0) * kDeg));
+  } else if (name == "ASIN") {
+    f.want(1);
+    f.domain(std::fabs(f.arg(0)) <= 1);
+    out = f.real(std::asin(f.arg(0)) / kDeg);
+  } else if (name == "ACOS") {
+    f.want(1);
+    f.domain(std::fabs(f.arg(0)) <= 1);
+    out = f.real(std::acos(f.arg(0)) / kDeg);
+  } else if (name == "ATAN2") {
+    f.want(2);
+    f.domain(f.arg(0) != 0 || f.arg(1) != 0);
+    out = f.real(std::atan2(f.arg(0), f.arg(1)) / kDeg);
+  } else {
+    return false;
   }
-  if (name == "COS") {
-    want(1);
-    return real(std::cos(arg(0) * kDeg));
-  }
-  if (name == "TAN") {
-    want(1);
-    double x = std::fmod(arg(0), 180.0);
-    domain(std::fabs(std::fabs(x) - 90.0) > 1e-12);
-    return real(std::tan(arg(0) * kDeg));
-  }
-  if (name == "ASIN") {
-    want(1);
-    domain(std::fabs(arg(0)) <= 1);
-    return real(std::asin(arg(0)) / kDeg);
-  }
-  if (name == "ACOS") {
-    want(1);
-    domain(std::fabs(arg(0)) <= 1);
-    return real(std::acos(arg(0)) / kDeg);
-  }
-  if (name == "ATAN2") {
-    want(2);
-    domain(arg(0) != 0 || arg(1) != 0);
-    return real(std::atan2(arg(0), arg(1)) / kDeg);
-  }
+  return true;
+}
+
+// SQRT, ABS, POT, TRUNC, ROUND, ROUNDUP, EXP, LN, MINVAL, MAXVAL, STRLEN; false if `f` is none
+// of them.
+bool arithmetic(const FunctionArgs& f, Value& out) {
+  const std::string_view name = f.name;
   if (name == "SQRT") {
-    want(1);
-    domain(arg(0) >= 0);
-    return real(std::sqrt(arg(0)));
-  }
-  if (name == "ABS") {
-    want(1);
-    return numeric(args[0].type == Type::Int ? Type::Int : Type::Real, std::fabs(arg(0)), "ABS");
-  }
-  if (name == "POT") {
-    want(1);
-    return real(arg(0) * arg(0));
-  }
-  if (name == "TRUNC") {
-    want(1);
-    return real(std::trunc(arg(0)));
-  }
-  if (name == "ROUND") {
-    want(1);
-    return real(std::round(arg(0)));
-  }
-  if (name == "ROUNDUP") {
-    want(1);
-    return real(std::ceil(arg(0)));
-  }
-  if (name == "EXP") {
-    want(1);
-    return real(std::exp(arg(0)));
-  }
-  if (name == "LN") {
-    want(1);
-    domain(arg(0) > 0);
-    return real(std::log(arg(0)));
-  }
-  if (name == "MINVAL" || name == "MAXVAL") {
-    want(2);
-    double a = arg(0), c = arg(1);
-    bool ints = args[0].type == Type::Int && args[1].type == Type::Int;
+    f.want(1);
+    f.domain(f.arg(0) >= 0);
+    out = f.real(std::sqrt(f.arg(0)));
+  } else if (name == "ABS") {
+    f.want(1);
+    out = numeric(f.args[0].type == Type::Int ? Type::Int : Type::Real, std::fabs(f.arg(0)), "ABS");
+  } else if (name == "POT") {
+    f.want(1);
+    out = f.real(f.arg(0) * f.arg(0));
+  } else if (name == "TRUNC") {
+    f.want(1);
+    out = f.real(std::trunc(f.arg(0)));
+  } else if (name == "ROUND") {
+    f.want(1);
+    out = f.real(std::round(f.arg(0)));
+  } else if (name == "ROUNDUP") {
+    f.want(1);
+    out = f.real(std::ceil(f.arg(0)));
+  } else if (name == "EXP") {
+    f.want(1);
+    out = f.real(std::exp(f.arg(0)));
+  } else if (name == "LN") {
+    f.want(1);
+    f.domain(f.arg(0) > 0);
+    out = f.real(std::log(f.arg(0)));
+  } else if (name == "MINVAL" || name == "MAXVAL") {
+    f.want(2);
+    double a = f.arg(0), c = f.arg(1);
+    bool ints = f.args[0].type == Type::Int && f.args[1].type == Type::Int;
     double v = name == "MINVAL" ? std::min(a, c) : std::max(a, c);
-    return numeric(ints ? Type::Int : Type::Real, v, "MINVAL/MAXVAL");
+    out = numeric(ints ? Type::Int : Type::Real, v, "MINVAL/MAXVAL");
+  } else if (name == "STRLEN") {
+    f.want(1);
+    out = Value::integer(static_cast<double>(toText(f.args[0]).size()));
+  } else {
+    return false;
   }
-  if (name == "STRLEN") {
-    want(1);
-    return Value::integer(static_cast<double>(toText(args[0]).size()));
-  }
+  return true;
+}
+
+}  // namespace
+
+Value Evaluator::function(std::string_view name, std::span<const Value> args) {
+  const FunctionArgs f{name, args};
+  Value v;
+  if (trigonometric(f, v) || arithmetic(f, v)) return v;
   return env_.call(name, args);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lang/block.hpp"
+#include "lang/parser.hpp"
 #include "lang/value.hpp"
 
 namespace ncoffset::lang {
@@ -37,6 +38,26 @@ class Evaluator {
 
  private:
   Environment& env_;
+  int depth_ = 0;  // recursion of eval, bounded by kMaxExpressionDepth (lang/parser.hpp)
+  // Counts one level of recursion: alarm 99003 beyond kMaxExpressionDepth (the parser bounds the
+  // nesting of what it builds by ParseLimits, so only a block built otherwise gets there).
+  class DepthGuard {
+   public:
+    explicit DepthGuard(int& depth) : depth_(depth) {
+      if (++depth_ > kMaxExpressionDepth) {
+        --depth_;
+        tooDeep();
+      }
+    }
+    ~DepthGuard() { --depth_; }
+    DepthGuard(const DepthGuard&) = delete;
+    DepthGuard& operator=(const DepthGuard&) = delete;
+
+   private:
+    int& depth_;
+    [[noreturn]] static void tooDeep();
+  };
+  Value binaryChain(const Block& b, int n);
   Value binary(Op op, const Value& l, const Value& r);
   Value function(std::string_view name, std::span<const Value> args);
 };

@@ -29,7 +29,9 @@ options = ["--max-blocks", "--max-line-length", "--max-expression-depth", "--max
 bad = ["0", "-1", "+5", " 5", "5 ", "0x10", "1e3", "1.5", "", "abc", "99999999999999999999",
        "18446744073709551617"]
 for opt in options:
-    top = "1000000000000" if opt == "--max-blocks" else "2147483647"
+    # The stack-safe caps (docs/limits.md): line length 4 MiB, expression depth 1000.
+    top = {"--max-blocks": "1000000000000", "--max-line-length": "4194304",
+           "--max-expression-depth": "1000"}.get(opt, "2147483647")
     for value in bad + [str(int(top) + 1)]:
         p = run(opt, value)
         check(f"{opt} {value!r}: exit 1", p.returncode == 1, (p.returncode, p.stderr))

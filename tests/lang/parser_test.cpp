@@ -63,10 +63,41 @@ TEST(NormalizeLine, KeepsStringLiteralsAsWritten) {
   EXPECT_EQ(out, "MSG(\"Ma\xC3\x9F\") X1");
 }
 
-TEST(NormalizeLine, TabsAndCarriageReturnBecomeBlanks) {
+TEST(NormalizeLine, TabsBecomeBlanks) {
   std::string out;
-  ASSERT_TRUE(normalizeLine("g1\tx1\r", out, nullptr));
+  ASSERT_TRUE(normalizeLine("g1\tx1\t", out, nullptr));
   EXPECT_EQ(out, "G1 X1 ");
+}
+
+// A CR inside a line (the reader takes a CR before the LF with the line end), a form feed or a
+// vertical tab is no blank but a bad byte (issue 14, item 7); in a comment or string it is kept.
+TEST(NormalizeLine, CarriageReturnFormFeedAndVerticalTabAreBadBytes) {
+  std::string out;
+  int bad = 0;
+  EXPECT_FALSE(normalizeLine("G1 X10 F100\rY10\rZ-5", out, &bad));
+  EXPECT_EQ(bad, 12);
+  EXPECT_FALSE(normalizeLine("g1\tx1\r", out, &bad));
+  EXPECT_EQ(bad, 6);
+  EXPECT_FALSE(normalizeLine("\fG1 X1", out, &bad));
+  EXPECT_EQ(bad, 1);
+  EXPECT_FALSE(normalizeLine("G1\vX1", out, &bad));
+  EXPECT_EQ(bad, 3);
+  EXPECT_TRUE(normalizeLine("G1 X1 ; \r\f", out, &bad));
+  EXPECT_TRUE(normalizeLine("MSG(\"a\rb\")", out, &bad));
+}
+
+TEST(Parser, CarriageReturnInsideALineRaises99011NamingIt) {
+  Block b;
+  try {
+    parseBlock("G1 X10 F100\rY10\rZ-5", 1, b);
+    FAIL() << "no alarm";
+  } catch (const AlarmError& e) {
+    EXPECT_EQ(e.number(), toInt(AlarmNumber::BadCharacter));
+    EXPECT_NE(e.text().find("0x0D (carriage return not followed by a line feed) at column 12"),
+              std::string::npos)
+        << e.text();
+  }
+  EXPECT_EQ(parseAlarm("G1 X1\f"), toInt(AlarmNumber::BadCharacter));
 }
 
 TEST(NormalizeLine, BadBytesOutsideCommentsAndStrings) {
@@ -659,6 +690,15 @@ TEST(Parser, SyntaxErrorsRaise12080) {
   };
   for (const char* text : broken)
     EXPECT_EQ(parseAlarm(text), toInt(AlarmNumber::SyntaxError)) << text;
+}
+
+// EX directly after a number is its exponent or an error, never the next word (issue 14, item
+// 6: `R1=1EX` used to be R1=1 and a call of EX.SPF).
+TEST(Parser, ExWithoutExponentIsASyntaxError) {
+  for (const char* text : {"R1=1EX", "G1 X1EX F100", "X1EX", "CR=5EX", "R1=2*1.5EX+", "X1EXY"})
+    EXPECT_EQ(parseAlarm(text), toInt(AlarmNumber::SyntaxError)) << text;
+  EXPECT_EQ(parseAlarm("G1 X1EX2 F100"), 0);
+  EXPECT_EQ(parseAlarm("G1 X1 EXX"), 0);  // a name after a blank is a word of its own
 }
 
 TEST(Parser, AddressWithoutValueIsASyntaxError) {

@@ -160,11 +160,11 @@ int main(int argc, char** argv) {
       ->transform(ncoffset::cli::limitValue(ncoffset::cli::kMaxBlocksMax));
   app.add_option("--max-line-length", l.max_line_length, "characters per block (alarm 99001)")
       ->capture_default_str()
-      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
+      ->transform(ncoffset::cli::limitValue(ncoffset::Limits::kMaxLineLength));
   app.add_option("--max-expression-depth", l.max_expression_depth,
                  "expression nesting (alarm 99003)")
       ->capture_default_str()
-      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
+      ->transform(ncoffset::cli::limitValue(ncoffset::Limits::kMaxExpressionDepth));
   app.add_option("--max-program-levels", l.max_program_levels,
                  "main program + subprogram levels (alarm 14012)")
       ->capture_default_str()

@@ -164,3 +164,70 @@ write("msg_terminal_escape.MPF",
       "G90 G1 X1 F100\n".encode() +
       b'MSG("clear\x1b[2J title\x1b]0;owned\x07 csi\xc2\x9b31m Ma\xc3\x9f")\n'
       b"M30\n")
+
+# Operator chains as long as the default --max-line-length 65536 allows (issue 14, item 1): a
+# left-associative chain builds a tree as deep as it is long, which the evaluator walks in a
+# loop; these crashed with a stack overflow before.
+LIMIT = 65536
+
+
+def chain(prefix, op_operand, suffix=""):
+    """prefix + op_operand repeated, + suffix, exactly LIMIT characters (pads with blanks)."""
+    n = (LIMIT - len(prefix) - len(suffix)) // len(op_operand)
+    text = prefix + op_operand * n + suffix
+    return text + " " * (LIMIT - len(text))
+
+
+write("chain_plus_assign.MPF",
+      "; Checks: R1=1+1+...+1 with 32766 '+' in a block of exactly 65536 characters (the default\n"
+      "; --max-line-length) evaluates: R1 = 32767; row line 5 X32767. Status 0.\n"
+      "G90 G1 X1 F100\n" + chain("R1=1", "+1") + "\n" + "G1 X=R1\nM30\n")
+
+write("chain_minus_axis.MPF",
+      "; Checks: an axis word G1 F100 X=1-0-0-...-0 of exactly 65536 characters evaluates:\n"
+      "; X = 1; row line 3 X1 F100. Status 0.\n" + chain("G90 G1 F100 X=1", "-0") + "\n" +
+      "M30\n")
+
+write("chain_mul_if.MPF",
+      "; Checks: an IF condition 1*1*...*1==1 of exactly 65536 characters evaluates (TRUE):\n"
+      "; row line 5 X2 inside the IF. Status 0.\n"
+      "G90 G1 X1 F100\n" + chain("IF 1", "*1", "==1") + "\n" + "G1 X2\nENDIF\nM30\n")
+
+write("CHAIN_DP6.INI",
+      "; Init file of chain_init: the radius $TC_DP6[1,1]=0+0+...+0+5 in one block of exactly\n"
+      "; 65536 characters.\n"
+      "CHANDATA(1)\n$TC_DP1[1,1]=120\n" + chain("$TC_DP6[1,1]=0", "+0", "+5") + "\nM17\n")
+
+write("chain_init.MPF",
+      "; Checks: an init file whose $TC_DP6[1,1]=0+0+...+5 fills the default line limit (65536\n"
+      "; characters) sets the radius 5: R1=$TC_DP6[1,1] gives X5 (row line 5). Status 0.\n"
+      "T1 D1\nR1=$TC_DP6[1,1]\nG90 G1 X=R1 F100\nM30\n")
+
+# Nesting at and beyond the largest --max-expression-depth (1000, Limits::kMaxExpressionDepth).
+write("depth_limit_1000.MPF",
+      "; Checks: --max-expression-depth 1000 (the largest allowed): 999 nested parentheses are\n"
+      "; 1000 levels with the expression itself and evaluate (R1 = 7, row line 6 X7); 1000\n"
+      "; nested ABS( are 1001 levels: alarm 99003 naming the limit 1000 at line 7. Status 2.\n"
+      "G90 G1 X1 F100\n"
+      "R1=" + "(" * 999 + "7" + ")" * 999 + "\n"
+      "G1 X=R1\n"
+      "R2=" + "ABS(" * 1000 + "1" + ")" * 1000 + "\n"
+      "G1 X=R2\nM30\n")
+
+# A CR inside a line (issue 14, item 7): not a blank and not a line end (only CR LF is), so
+# "G1 X10 F100<CR>Y10<CR>Z-5<CR><LF>" is no diagonal move but alarm 99011 naming the byte.
+write("cr_inside_line.MPF",
+      b"; Checks: a lone CR inside a block on line 5 (G1 X10 F100<CR>Y10<CR>Z-5<CR><LF>): the\n"
+      b"; reader ends lines at LF and takes a CR only directly before it, so the first CR (column\n"
+      b"; 12) is alarm 99011 - it used to be a blank and made one diagonal move. Row: line 4.\n"
+      b"G90 G1 X1 F100\r\n"
+      b"G1 X10 F100\rY10\rZ-5\r\n"
+      b"M30\r\n")
+
+# A form feed inside a line: alarm 99011 as well.
+write("form_feed_inside_line.MPF",
+      b"; Checks: a form feed (0x0C) between two words on line 4: alarm 99011 at line 4 (it\n"
+      b"; used to be taken as a blank). Row: line 3 X1. Status 2.\n"
+      b"G90 G1 X1 F100\n"
+      b"G1 X2\x0cY2\n"
+      b"M30\n")
