@@ -21,10 +21,10 @@ void Interpreter::ifStatement(const Stmt& st, size_t index, bool& jumped) {
   std::string_view kw = st.name;
   if (kw == "IF") {
     bool cond = lang::toBool(eval_.eval(b, st.expr));
-    if (index + 1 < b.stmts.size() && b.stmts[index + 1].jump) {
+    if (index + 1 < b.stmts.size() && b.stmts[index + 1].jump != lang::JumpKind::None) {
       // IF <condition> GOTOx <target>: a conditional jump.
       if (cond) {
-        jump(b.stmts[index + 1], b.stmts[index + 1].jump == 4);
+        jump(b.stmts[index + 1], b.stmts[index + 1].jump == lang::JumpKind::Gotoc);
         jumped = true;
       } else {
         jumped = true;  // the rest of the block is the jump: nothing else to do
@@ -125,7 +125,7 @@ void Interpreter::caseStatement(const Stmt& st, size_t index, bool& jumped) {
                                          : lang::realEqual(lang::toNumber(v), lang::toNumber(sel));
     }
     if (hit) {
-      jump(arm, arm.jump == 4);
+      jump(arm, arm.jump == lang::JumpKind::Gotoc);
       jumped = true;
       return;
     }
@@ -140,13 +140,14 @@ void Interpreter::jump(const Stmt& st, bool quiet) {
   jumpTo(st.jump, st.target, quiet);
 }
 
-void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
+void Interpreter::jumpTo(lang::JumpKind kind, int target_node, bool quiet) {
   const Node& target = block_.node(target_node);
   const size_t here = line_pos_.offset;
   JumpSearch search;
-  search.forward = kind == 1 || kind == 3 || kind == 4;
-  search.backward = kind == 2 || kind == 3 || kind == 4;
-  search.here_too = kind != 1 && kind != 2;
+  using lang::JumpKind;
+  search.forward = kind != JumpKind::Gotob;
+  search.backward = kind != JumpKind::Gotof;
+  search.here_too = kind != JumpKind::Gotof && kind != JumpKind::Gotob;
   std::string label;
   long long block_no = -1;
   if (target.kind == NodeKind::BlockNo) {
@@ -175,9 +176,9 @@ void Interpreter::jumpTo(int kind, int target_node, bool quiet) {
   }
   if (quiet) return;  // GOTOC: continue with the next block
   raise(AlarmNumber::JumpNotFound, fmt::format("jump destination {} not found ({} search)", label,
-                                               kind == 1   ? "forward"
-                                               : kind == 2 ? "backward"
-                                                           : "forward and backward"));
+                                               kind == JumpKind::Gotof   ? "forward"
+                                               : kind == JumpKind::Gotob ? "backward"
+                                                                         : "forward and backward"));
 }
 
 }  // namespace ncoffset::interp

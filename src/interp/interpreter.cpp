@@ -180,8 +180,8 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
             "parameters only)");
     return;
   }
-  if (st.jump) {  // GOTOF / GOTOB / GOTO / GOTOC
-    jump(st, st.jump == 4);
+  if (st.jump != lang::JumpKind::None) {  // GOTOF / GOTOB / GOTO / GOTOC
+    jump(st, st.jump == lang::JumpKind::Gotoc);
     jumped = true;
     return;
   }

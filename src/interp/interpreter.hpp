@@ -62,7 +62,7 @@ class Interpreter final : public lang::Environment {
   bool loopStatement(const lang::Stmt& st, bool& jumped);
   void caseStatement(const lang::Stmt& st, size_t index, bool& jumped);
   void jump(const lang::Stmt& st, bool quiet);
-  void jumpTo(int kind, int target_node, bool quiet);
+  void jumpTo(lang::JumpKind kind, int target_node, bool quiet);
   void callSubprogram(std::string_view name, long long repeat);
   // Finds a subprogram file beside the main program (nullptr if there is none).
   bool programExists(std::string_view name);

@@ -73,14 +73,23 @@ enum class StmtKind : std::uint8_t {
   ProcCall,  // NAME(args) as a statement: MSG(..), CHANDATA(..), predefined procedures
 };
 
+// The jump statements (PM-JP "Program jumps"): which way the destination is searched.
+enum class JumpKind : unsigned char {
+  None,   // no jump
+  Gotof,  // GOTOF: forward (towards the program end)
+  Gotob,  // GOTOB: backward (towards the program start)
+  Goto,   // GOTO: forward first, then backward; alarm 14080 if not found
+  Gotoc,  // GOTOC: as GOTO, but no alarm if not found (the program continues)
+};
+
 struct Stmt {
   StmtKind kind = StmtKind::Word;
-  std::string_view name;  // address, keyword, variable or program name
-  int ext = -1;           // address extension (M2=6 -> 2)
-  int expr = -1;          // value / right-hand side / condition / start value
-  int expr2 = -1;         // FOR: end value
-  int target = -1;        // Assign and FOR: l-value node; jumps: target node
-  int jump = 0;           // CaseArm / IF: 1 GOTOF, 2 GOTOB, 3 GOTO, 4 GOTOC
+  std::string_view name;           // address, keyword, variable or program name
+  int ext = -1;                    // address extension (M2=6 -> 2)
+  int expr = -1;                   // value / right-hand side / condition / start value
+  int expr2 = -1;                  // FOR: end value
+  int target = -1;                 // Assign and FOR: l-value node; jumps: target node
+  JumpKind jump = JumpKind::None;  // a jump statement (also in a CaseArm or after IF)
   AxisMode mode = AxisMode::Default;
   bool has_equals = false;
   bool literal = false;  // Word with a plain number (X10): value in literal_value, expr = -1

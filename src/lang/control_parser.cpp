@@ -66,7 +66,7 @@ void Parser::controlStatement(std::string_view kw, int col) {
     b_.stmts.push_back(st);
     return;
   }
-  if (int j = jumpKind(kw)) {
+  if (JumpKind j = jumpKind(kw); j != JumpKind::None) {
     st.jump = j;
     st.target = jumpTarget();
     b_.stmts.push_back(st);
@@ -169,7 +169,7 @@ void Parser::caseArms() {
     if (!isAlpha(peek())) syntax("GOTOF/GOTOB expected in CASE");
     std::string_view kw = ident();
     arm.jump = jumpKind(kw);
-    if (!arm.jump) syntax("GOTOF/GOTOB expected in CASE");
+    if (arm.jump == JumpKind::None) syntax("GOTOF/GOTOB expected in CASE");
     arm.name = kw;
     arm.target = jumpTarget();
     b_.stmts.push_back(arm);

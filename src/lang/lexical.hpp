@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "lang/block.hpp"
+
 namespace ncoffset::lang {
 
 // After normalisation (upper case): letters, '_' and '$' may start a name.
@@ -57,13 +59,13 @@ inline bool isControlKeyword(std::string_view w) {
   }
 }
 
-// 1 GOTOF, 2 GOTOB, 3 GOTO, 4 GOTOC, 0 no jump keyword (the values of Stmt::jump).
-inline int jumpKind(std::string_view w) {
-  if (w == "GOTOF") return 1;
-  if (w == "GOTOB") return 2;
-  if (w == "GOTO") return 3;
-  if (w == "GOTOC") return 4;
-  return 0;
+// The jump a keyword stands for (JumpKind::None for any other word).
+inline JumpKind jumpKind(std::string_view w) {
+  if (w == "GOTOF") return JumpKind::Gotof;
+  if (w == "GOTOB") return JumpKind::Gotob;
+  if (w == "GOTO") return JumpKind::Goto;
+  if (w == "GOTOC") return JumpKind::Gotoc;
+  return JumpKind::None;
 }
 
 // Addresses that take a value after '=' (CR=10, DISC=50) besides the single letters.

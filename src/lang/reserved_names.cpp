@@ -51,7 +51,7 @@ bool isAddressWithNumber(std::string_view name) {
 bool isPredefinedName(std::string_view name) {
   if (name.size() == 1) return isLetter(name[0]);  // address letters
   return isAddressWithNumber(name) || isExtendedAddress(name) || isControlKeyword(name) ||
-         jumpKind(name) != 0 ||
+         jumpKind(name) != lang::JumpKind::None ||
          std::binary_search(std::begin(kPredefined), std::end(kPredefined), name);
 }
 

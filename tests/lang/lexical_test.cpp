@@ -22,11 +22,11 @@ TEST(Lexical, Keywords) {
     EXPECT_TRUE(isControlKeyword(kw)) << kw;
   EXPECT_FALSE(isControlKeyword("DEFINE"));
   EXPECT_FALSE(isControlKeyword("I"));
-  EXPECT_EQ(jumpKind("GOTOF"), 1);
-  EXPECT_EQ(jumpKind("GOTOB"), 2);
-  EXPECT_EQ(jumpKind("GOTO"), 3);
-  EXPECT_EQ(jumpKind("GOTOC"), 4);
-  EXPECT_EQ(jumpKind("GOTOX"), 0);
+  EXPECT_EQ(jumpKind("GOTOF"), JumpKind::Gotof);
+  EXPECT_EQ(jumpKind("GOTOB"), JumpKind::Gotob);
+  EXPECT_EQ(jumpKind("GOTO"), JumpKind::Goto);
+  EXPECT_EQ(jumpKind("GOTOC"), JumpKind::Gotoc);
+  EXPECT_EQ(jumpKind("GOTOX"), JumpKind::None);
 }
 
 TEST(Lexical, ExtendedAddresses) {

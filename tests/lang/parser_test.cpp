@@ -400,7 +400,7 @@ TEST(Parser, IfWithJump) {
   EXPECT_EQ(b.stmts[0].name, "IF");
   EXPECT_EQ(b.node(b.stmts[0].expr).op, Op::Ge);
   EXPECT_EQ(b.stmts[1].name, "GOTOF");
-  EXPECT_EQ(b.stmts[1].jump, 1);
+  EXPECT_EQ(b.stmts[1].jump, JumpKind::Gotof);
   EXPECT_EQ(b.node(b.stmts[1].target).kind, NodeKind::Name);
   EXPECT_EQ(b.node(b.stmts[1].target).text, "LABEL1");
 }
@@ -433,17 +433,17 @@ TEST(Parser, ForLoop) {
 TEST(Parser, JumpForms) {
   struct Case {
     const char* text;
-    int jump;
+    JumpKind jump;
     NodeKind kind;
     double number;
     const char* name;
   };
   const Case cases[] = {
-      {"GOTOF LBL", 1, NodeKind::Name, 0, "LBL"},
-      {"GOTOB N100", 2, NodeKind::BlockNo, 100, ""},
-      {"GOTO :20", 3, NodeKind::BlockNo, 20, ""},
-      {"GOTOC 30", 4, NodeKind::BlockNo, 30, ""},
-      {"GOTOF DEST_VAR", 1, NodeKind::Name, 0, "DEST_VAR"},
+      {"GOTOF LBL", JumpKind::Gotof, NodeKind::Name, 0, "LBL"},
+      {"GOTOB N100", JumpKind::Gotob, NodeKind::BlockNo, 100, ""},
+      {"GOTO :20", JumpKind::Goto, NodeKind::BlockNo, 20, ""},
+      {"GOTOC 30", JumpKind::Gotoc, NodeKind::BlockNo, 30, ""},
+      {"GOTOF DEST_VAR", JumpKind::Gotof, NodeKind::Name, 0, "DEST_VAR"},
   };
   for (const Case& c : cases) {
     Block b = parse(c.text);
@@ -469,9 +469,9 @@ TEST(Parser, CaseArms) {
   EXPECT_EQ(b.node(b.stmts[0].expr).kind, NodeKind::RParam);
   EXPECT_EQ(b.stmts[1].kind, StmtKind::CaseArm);
   EXPECT_EQ(wordValue(b, b.stmts[1]), 1);
-  EXPECT_EQ(b.stmts[1].jump, 1);
+  EXPECT_EQ(b.stmts[1].jump, JumpKind::Gotof);
   EXPECT_EQ(b.node(b.stmts[1].target).text, "A1");
-  EXPECT_EQ(b.stmts[2].jump, 2);
+  EXPECT_EQ(b.stmts[2].jump, JumpKind::Gotob);
   EXPECT_EQ(b.node(b.stmts[2].target).kind, NodeKind::BlockNo);
   EXPECT_EQ(b.node(b.stmts[2].target).number, 20);
   EXPECT_EQ(b.stmts[3].kind, StmtKind::CaseArm);
