@@ -10,6 +10,7 @@
 //
 // The program's header comment explains how the expected values were derived by hand.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -129,7 +130,10 @@ TEST_P(Golden, MatchesExpected) {
       want_csv.push_back(l);
   }
   fs::path dir = c.program.parent_path();
-  fs::path tmp = fs::temp_directory_path() / ("ncoffset_golden_" + c.name);
+  // The process id in the name: two builds' test runs (Release and ASan) may run the same case
+  // at the same moment.
+  fs::path tmp =
+      fs::temp_directory_path() / ("ncoffset_golden_" + c.name + "_" + std::to_string(::getpid()));
   std::string cmd = "cd '" + dir.string() + "' && '" NCOFFSET_CLI "' " + args + " -o '" +
                     tmp.string() + ".csv' '" + c.program.filename().string() + "' 2> '" +
                     tmp.string() + ".err' < /dev/null";
