@@ -11,6 +11,7 @@
 #include "file_identity.hpp"
 #include "limit_option.hpp"
 #include "ncoffset/channel.hpp"
+#include "ncoffset/version.hpp"
 #include "out/html_report.hpp"
 #include "out/mpf_writer.hpp"
 #include "out/svg_writer.hpp"
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
   CLI::App app{"ncoffset: SINUMERIK 840D sl tool offsets (W1) outside the control"};
   Args a;
   ncoffset::RunOptions options;
+  app.set_version_flag("--version", "ncoffset " NCOFFSET_VERSION_STRING);
   app.add_option("PROGRAM", a.program, "part program (.MPF)")->required();
   app.add_option("--init", a.inits, "init file run before PROGRAM (repeatable, in order)")
       ->allow_extra_args(false);  // one file per --init, so `--init A PROGRAM` works
@@ -184,7 +186,7 @@ int main(int argc, char** argv) {
       ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
+  } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // Not app.exit(e): the message quotes the arguments, which are escaped like program text.
