@@ -56,18 +56,22 @@ std::string extensionFormat(const std::string& path) {
 struct Args {
   std::string program, output, format, coords = "mcs", view = "xy", vars;
   std::vector<std::string> inits;
+  int decimals = -1;  // --decimals: -1 the shortest round-trip text
 };
 
 std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
                                                const ncoffset::Channel& channel) {
   auto names = [&channel](int i) -> const std::string& { return channel.fileName(i); };
-  if (a.format == "jsonl") return std::make_unique<ncoffset::out::JsonLinesWriter>(out, names);
+  const int d = a.decimals;
+  if (a.format == "jsonl") return std::make_unique<ncoffset::out::JsonLinesWriter>(out, names, d);
   if (a.format == "svg")
-    return std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view));
+    return std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view),
+                                                      true, d);
   if (a.format == "html")
     return std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(a.view),
-                                                       a.program, a.coords);
-  if (a.format == "mpf") return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names);
+                                                       a.program, a.coords, d);
+  if (a.format == "mpf") return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names, d);
+  if (d >= 0) return std::make_unique<ncoffset::out::RoundedCsvWriter>(out, d);
   return std::make_unique<ncoffset::out::CsvWriter>(out);
 }
 
@@ -155,6 +159,10 @@ int main(int argc, char** argv) {
   app.add_option("--view", a.view, "svg: plane drawn: xy (G17, default) | zx (G18) | yz (G19)")
       ->check(CLI::IsMember({"xy", "zx", "yz"}));
   app.add_option("--vars", a.vars, "write R parameters and user variables as JSON");
+  app.add_option("--decimals", a.decimals,
+                 "round written numbers to at most N decimals, 0..17 (default: shortest "
+                 "round trip; mpf: 6)")
+      ->transform(ncoffset::cli::limitValue(17, 0));
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
       ->capture_default_str()
