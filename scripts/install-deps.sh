@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages ncoffset builds and tests with (only those that are missing).
 set -euo pipefail
-packages=(cmake ninja-build g++ clang-14 clang-format-14 libclang-rt-14-dev libfmt-dev libcli11-dev libgtest-dev
-          libgmock-dev libbenchmark-dev python3)
+packages=(cmake ninja-build g++ clang-14 clang-format-14 libclang-rt-14-dev libfmt-dev libcli11-dev
+          libgtest-dev libgmock-dev libbenchmark-dev python3 pkg-config)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

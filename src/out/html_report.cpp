@@ -1,5 +1,7 @@
 #include "out/html_report.hpp"
 
+#include "out/shortest_number.hpp"
+
 namespace ncoffset::out {
 namespace {
 
@@ -25,8 +27,13 @@ constexpr std::string_view kStyle =
 
 }  // namespace
 
-HtmlReport::HtmlReport(std::FILE* f, View view, std::string program, std::string coords)
-    : w_(f), svg_(f, view, false), program_(std::move(program)), coords_(std::move(coords)) {}
+HtmlReport::HtmlReport(std::FILE* f, View view, std::string program, std::string coords,
+                       int decimals)
+    : w_(f),
+      svg_(f, view, false, decimals),
+      program_(std::move(program)),
+      coords_(std::move(coords)),
+      decimals_(decimals) {}
 
 void HtmlReport::segment(const Segment& s) {
   if (finished_) return;
@@ -40,8 +47,9 @@ void HtmlReport::segment(const Segment& s) {
     fmt::format_to(it,
                    "<tr><td class=\"n\">{}</td><td>{}</td><td class=\"n\">{}</td>"
                    "<td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">",
-                   s.line, motionName(s.motion), s.end.x + 0.0, s.end.y + 0.0, s.end.z + 0.0);
-    if (s.has_feed) fmt::format_to(it, "{}", s.feed);
+                   s.line, motionName(s.motion), Number{s.end.x + 0.0, decimals_},
+                   Number{s.end.y + 0.0, decimals_}, Number{s.end.z + 0.0, decimals_});
+    if (s.has_feed) fmt::format_to(it, "{}", Number{s.feed, decimals_});
     append(rows_, "</td></tr>\n");
   }
 }
@@ -126,7 +134,8 @@ void HtmlReport::writeSummary(const Alarm* alarm) {
     if (box_.empty())
       append(b, "&#8211;");
     else
-      fmt::format_to(it, "{} &#8230; {}", box_.lo[i] + 0.0, box_.hi[i] + 0.0);
+      fmt::format_to(it, "{} &#8230; {}", Number{box_.lo[i] + 0.0, decimals_},
+                     Number{box_.hi[i] + 0.0, decimals_});
     append(b, "</td></tr>\n");
   }
   append(b, "</table>\n");

@@ -20,7 +20,8 @@ class HtmlReport final : public PathSink {
   static constexpr int kMaxNotes = 1000;  // warnings and messages listed (memory stays flat)
 
   // program and coords ("mcs"/"wcs") name the run in the page title and summary.
-  HtmlReport(std::FILE* f, View view, std::string program, std::string coords);
+  // decimals: of the table's and the ranges' numbers and the drawing's path (--decimals).
+  HtmlReport(std::FILE* f, View view, std::string program, std::string coords, int decimals = -1);
   void segment(const Segment& s) override;
   void message(const SourceLoc& where, const std::string& text) override;
   void warning(const SourceLoc& where, int number, const std::string& text) override;
@@ -41,6 +42,7 @@ class HtmlReport final : public PathSink {
   BufferedWriter w_;
   SvgWriter svg_;
   std::string program_, coords_;
+  int decimals_;
   bool finished_ = false;
   std::array<long long, 4> counts_{};  // per Motion
   double rapid_length_ = 0, cut_length_ = 0;

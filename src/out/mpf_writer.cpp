@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "out/arc_geometry.hpp"
+#include "out/shortest_number.hpp"
 
 namespace ncoffset::out {
 namespace {
@@ -20,24 +21,46 @@ const char* const kPlaneCode[3] = {"G19", "G18", "G17"};  // by applicate axis X
 
 }  // namespace
 
-void appendNcNumber(fmt::memory_buffer& b, double v) {
-  char text[512];
-  auto r = fmt::format_to_n(text, sizeof text, "{:.6f}", v);
-  std::string_view s(text, std::min(r.size, sizeof text));
-  if (s.find('.') != std::string_view::npos) {
-    while (s.back() == '0') s.remove_suffix(1);
-    if (s.back() == '.') s.remove_suffix(1);
-  }
-  if (s == "-0") s = "0";
-  append(b, s);
+void appendNcNumber(fmt::memory_buffer& b, double v, int decimals) {
+  char text[512];  // |v| < 1e308: 309 digits, sign, point, 17 decimals
+  const double a = std::fabs(v);
+  const char* end = a < 1e15 ? writeRounded(text, v, decimals)
+                             : writeFixedDecimals(text, sizeof text, v, decimals);
+  b.append(text, end);
 }
 
-MpfWriter::MpfWriter(std::FILE* f, const std::string& coords, FileNames names)
-    : w_(f), names_(std::move(names)) {
-  fmt::format_to(fmt::appender(w_.buf()),
-                 "; ncoffset compensated path (coords {})\n"
-                 "G90 G71 ; absolute, mm\n",
-                 coords);
+std::string mpfHeader(const std::string& coords) {
+  const bool mcs = coords == "mcs";
+  std::string h = "; ncoffset compensated path (coords " + coords + ")\n";
+  if (mcs) {
+    h += "; Positions: machine coordinates (MCS) of the tool carrier reference point. Every\n"
+         ";   motion block has SUPA: no frame, zero offset, DRF or PRESET offset shifts it.\n"
+         "; Already in the positions: the frames (G54.., TRANS, ROT, SCALE, MIRROR), the tool\n"
+         ";   length and the radius compensation (G41/G42) of the source program: D0, G40.\n";
+  } else {
+    h += "; Positions: workpiece coordinates (WCS) of the tool tip.\n"
+         "; Already in the positions: the radius compensation (G41/G42) of the source program.\n"
+         "; Not in the positions: frames and tool length. Select the zero offset, frames and\n"
+         ";   tool (T, D) of the source program before running this; frame or tool changes\n"
+         ";   inside the source program are not repeated here.\n";
+  }
+  h += "; G90 absolute, G71 mm, G94 mm/min: F as programmed (a G95 source: its F values are\n"
+       ";   mm/rev, written unconverted). Arcs: the plane (G17/G18/G19) is written before them,\n"
+       ";   centres absolute (I=AC J=AC K=AC). Each block names its source line.\n";
+  h += mcs ? "G90 G71 G94 G40 G17 D0 ; reset: absolute, mm, mm/min, no radius compensation, "
+             "XY plane, no tool offset\n"
+           : "G90 G71 G94 G40 G17 ; reset: absolute, mm, mm/min, no radius compensation, XY "
+             "plane\n";
+  return h;
+}
+
+MpfWriter::MpfWriter(std::FILE* f, const std::string& coords, FileNames names, int decimals)
+    : w_(f),
+      names_(std::move(names)),
+      mcs_(coords == "mcs"),
+      decimals_(decimals < 0 ? 6 : decimals) {
+  const std::string h = mpfHeader(coords);
+  w_.buf().append(h.data(), h.data() + h.size());
 }
 
 void MpfWriter::segment(const Segment& s) {
@@ -80,10 +103,11 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
   }
   file_ = s.file;
   fmt::format_to(fmt::appender(b), "N{} {}", ++n_, motionName(motion));
+  if (mcs_) append(b, " SUPA");
   const char* axis[3] = {" X", " Y", " Z"};
   for (int i = 0; i < 3; ++i) {
     append(b, axis[i]);
-    appendNcNumber(b, end[i]);
+    appendNcNumber(b, end[i], decimals_);
   }
   if (motion == Motion::G2 || motion == Motion::G3) {
     // The centre in the plane's two axes, absolute; the applicate travel is in the end point.
@@ -91,7 +115,7 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
     for (int i = 0; i < 3; ++i) {
       if (i == plane_) continue;
       append(b, centre[i]);
-      appendNcNumber(b, s.centre[i]);
+      appendNcNumber(b, s.centre[i], decimals_);
       b.push_back(')');
     }
     if (s.turns > 0) fmt::format_to(fmt::appender(b), " TURN={}", s.turns);
@@ -104,7 +128,7 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
 void MpfWriter::feed(const Segment& s) {
   if (!s.has_feed || (has_feed_ && s.feed == feed_)) return;
   append(w_.buf(), " F");
-  appendNcNumber(w_.buf(), s.feed);
+  appendNcNumber(w_.buf(), s.feed, decimals_);
   has_feed_ = true;
   feed_ = s.feed;
 }
@@ -144,7 +168,7 @@ void MpfWriter::finish(const Alarm* alarm) {
     appendCommentText(b, alarm->where.file);
     fmt::format_to(fmt::appender(b), ":{}: ", alarm->where.line);
     appendCommentText(b, alarm->text);
-    append(b, "\nM0\n");
+    append(b, "\nM0 ; incomplete: the source program stopped at the alarm above\nM30\n");
   } else {
     append(b, "M30\n");
   }

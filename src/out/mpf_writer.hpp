@@ -1,6 +1,8 @@
 // The compensated path as a SINUMERIK part program (PM-NC: G0/G1 linear, G2/G3 with the
 // absolute centre I=AC(..) J=AC(..) K=AC(..), TURN= for helices; G17/G18/G19 working plane):
 // run through ncoffset again, it gives the same path without frames, tools or compensation.
+// A header comment says what the positions assume, then a block of reset words; in MCS every
+// motion block has SUPA (docs/output-formats.md).
 #pragma once
 
 #include <cstdio>
@@ -14,12 +16,13 @@ namespace ncoffset::out {
 class MpfWriter final : public PathSink {
  public:
   // coords: "mcs" or "wcs", named in the header comment. names: file names for a comment
-  // where the source file of the blocks changes (may be empty: line numbers only).
-  MpfWriter(std::FILE* f, const std::string& coords, FileNames names = {});
+  // where the source file of the blocks changes (may be empty: line numbers only). decimals:
+  // of the numbers, 0..17, kShortest (shortest_number.hpp) for the default, 6.
+  MpfWriter(std::FILE* f, const std::string& coords, FileNames names = {}, int decimals = -1);
   void segment(const Segment& s) override;
   void message(const SourceLoc& where, const std::string& text) override;
   void warning(const SourceLoc& where, int number, const std::string& text) override;
-  // `; ALARM N at FILE:LINE: TEXT` and M0, or M30. Later calls do nothing.
+  // `; ALARM N at FILE:LINE: TEXT`, M0 and M30, or M30. Later calls do nothing.
   void finish(const Alarm* alarm) override;
 
  private:
@@ -29,6 +32,8 @@ class MpfWriter final : public PathSink {
 
   BufferedWriter w_;
   FileNames names_;
+  bool mcs_;         // SUPA in every motion block
+  int decimals_;     // of the numbers written
   long long n_ = 0;  // block number of the last block
   int file_ = -1;    // source file of the last block
   int plane_ = -1;   // applicate axis of the last plane written (2: G17, 1: G18, 0: G19)
@@ -37,7 +42,11 @@ class MpfWriter final : public PathSink {
   bool finished_ = false;
 };
 
-// `v` with at most 6 decimals and no trailing zeros ("-0" as "0").
-void appendNcNumber(fmt::memory_buffer& b, double v);
+// `v` with at most `decimals` decimals and no trailing zeros ("-0" as "0"), never with an
+// exponent.
+void appendNcNumber(fmt::memory_buffer& b, double v, int decimals = 6);
+
+// The header of the program for coords "mcs" or "wcs": comment lines and the reset block.
+std::string mpfHeader(const std::string& coords);
 
 }  // namespace ncoffset::out

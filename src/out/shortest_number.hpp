@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 
@@ -100,4 +101,41 @@ inline void appendShortest(fmt::memory_buffer& b, double v) {
   b.append(text, writeShortest(text, v));
 }
 
+// --decimals N: numbers rounded to at most N decimals (0..17), or kShortest (the default).
+inline constexpr int kShortest = -1;
+inline constexpr int kMaxDecimals = 17;
+
+// Room that writeRounded needs at `out`.
+inline constexpr int kRoundedRoom = 40;
+
+// v with at most `decimals` (0..17) decimals, in fixed notation: the shortest text that reads
+// back as v where it has that few decimals (and no exponent), else v rounded to `decimals` as
+// printf's %.Nf rounds (the exact binary value to the nearest, a tie to even), trailing zeros
+// and a trailing point cut off, "-0" written as "0" (so 30.000000000000004 is "30" and
+// -7.1e-15 is "0" with 3 decimals). |v| >= 1e15, infinities and NaN as writeShortest writes
+// them. Returns the end.
+char* writeRounded(char* out, double v, int decimals);
+
+// v rounded to `decimals` in fixed notation ("%.Nf", zeros cut, "-0" as "0") for any finite v;
+// `size` bytes at `out`. Returns the end (at most out + size).
+char* writeFixedDecimals(char* out, size_t size, double v, int decimals);
+
+// A number for fmt::format_to: "{}" of `value` as it is (kShortest), or writeRounded.
+struct Number {
+  double value;
+  int decimals = kShortest;
+};
+
 }  // namespace ncoffset::out
+
+template <>
+struct fmt::formatter<ncoffset::out::Number> {
+  constexpr auto parse(format_parse_context& ctx) { return ctx.begin(); }
+  template <typename Context>
+  auto format(const ncoffset::out::Number& n, Context& ctx) const {
+    if (n.decimals < 0) return fmt::format_to(ctx.out(), "{}", n.value);
+    char text[ncoffset::out::kRoundedRoom];
+    const char* end = ncoffset::out::writeRounded(text, n.value, n.decimals);
+    return std::copy(static_cast<const char*>(text), end, ctx.out());
+  }
+};

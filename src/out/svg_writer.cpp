@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "out/shortest_number.hpp"
+
 namespace ncoffset::out {
 namespace {
 constexpr double kChordStep = kPi / 180;  // polylines: chords of at most 1 degree
@@ -122,7 +124,7 @@ void appendXmlEscaped(fmt::memory_buffer& b, std::string_view s) {
 // buffer is large; without one it stays in memory.
 class SvgWriter::Layer {
  public:
-  explicit Layer(Projection p) : proj_(p), tmp_(std::tmpfile()) {}
+  Layer(Projection p, int decimals) : proj_(p), decimals_(decimals), tmp_(std::tmpfile()) {}
   ~Layer() {
     if (tmp_) std::fclose(tmp_);
   }
@@ -134,8 +136,8 @@ class SvgWriter::Layer {
     if (cls != cls_ || !near(a, pen_) || commands_ >= kCommandsPerElement) {
       close();
       fmt::format_to(fmt::appender(buf_),
-                     "<path class=\"{}\" vector-effect=\"non-scaling-stroke\" d=\"M{} {}", cls, a.x,
-                     a.y);
+                     "<path class=\"{}\" vector-effect=\"non-scaling-stroke\" d=\"M{} {}", cls,
+                     num(a.x), num(a.y));
       cls_ = cls;
     }
     if (isArc(s))
@@ -171,7 +173,7 @@ class SvgWriter::Layer {
 
  private:
   void lineTo(Pt p) {
-    fmt::format_to(fmt::appender(buf_), "L{} {}", p.x, p.y);
+    fmt::format_to(fmt::appender(buf_), "L{} {}", num(p.x), num(p.y));
     ++commands_;
   }
 
@@ -190,8 +192,8 @@ class SvgWriter::Layer {
       bool large = pieces == 1 && total > kPi;
       for (int i = 1; i <= pieces; ++i) {
         Pt p = toSvg(proj_, i == pieces ? s.end : g.at(static_cast<double>(i) / pieces));
-        fmt::format_to(fmt::appender(buf_), "A{} {} 0 {} {} {} {}", g.radius, g.radius,
-                       large ? 1 : 0, ccw ? 0 : 1, p.x, p.y);
+        fmt::format_to(fmt::appender(buf_), "A{} {} 0 {} {} {} {}", num(g.radius), num(g.radius),
+                       large ? 1 : 0, ccw ? 0 : 1, num(p.x), num(p.y));
         ++commands_;
       }
       return;
@@ -207,7 +209,10 @@ class SvgWriter::Layer {
     buf_.clear();
   }
 
+  Number num(double v) const { return {v, decimals_}; }
+
   Projection proj_;
+  int decimals_;
   std::FILE* tmp_;
   fmt::memory_buffer buf_;
   const char* cls_ = nullptr;  // the style of the open <path>, nullptr: none open
@@ -215,12 +220,13 @@ class SvgWriter::Layer {
   int commands_ = 0;
 };
 
-SvgWriter::SvgWriter(std::FILE* f, View view, bool standalone)
+SvgWriter::SvgWriter(std::FILE* f, View view, bool standalone, int decimals)
     : w_(f),
       view_(view),
       standalone_(standalone),
-      programmed_(std::make_unique<Layer>(projection(view))),
-      path_(std::make_unique<Layer>(projection(view))) {}
+      decimals_(decimals),
+      programmed_(std::make_unique<Layer>(projection(view), decimals)),
+      path_(std::make_unique<Layer>(projection(view), decimals)) {}
 
 SvgWriter::~SvgWriter() = default;
 
@@ -329,7 +335,7 @@ void SvgWriter::writeAlarmMark(const Alarm& alarm, const Layout& l) {
   fmt::format_to(it,
                  "<g id=\"alarm\"><circle class=\"nco-alarm\" vector-effect=\"non-scaling-stroke\" "
                  "cx=\"{}\" cy=\"{}\" r=\"{}\"><title>alarm {} at ",
-                 at.x, at.y, 0.02 * l.size, alarm.number);
+                 Number{at.x, decimals_}, Number{at.y, decimals_}, 0.02 * l.size, alarm.number);
   appendXmlEscaped(b, alarm.where.file);
   fmt::format_to(it, ":{}: ", alarm.where.line);
   appendXmlEscaped(b, alarm.text);

@@ -31,8 +31,9 @@ void appendXmlEscaped(fmt::memory_buffer& b, std::string_view s);
 class SvgWriter final : public PathSink {
  public:
   // standalone: a whole SVG file (XML declaration); otherwise the bare <svg> element, for
-  // inlining into HTML.
-  SvgWriter(std::FILE* f, View view, bool standalone = true);
+  // inlining into HTML. decimals: of the path's coordinates (--decimals; -1: the shortest
+  // round-trip text); the layout (viewBox, legend) is not rounded.
+  SvgWriter(std::FILE* f, View view, bool standalone = true, int decimals = -1);
   ~SvgWriter() override;
   void segment(const Segment& s) override;
   void programmed(const Segment& s) override;
@@ -51,6 +52,7 @@ class SvgWriter final : public PathSink {
   BufferedWriter w_;
   View view_;
   bool standalone_;
+  int decimals_;
   bool finished_ = false;
   std::unique_ptr<Layer> programmed_, path_;
   Box box_;

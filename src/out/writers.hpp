@@ -39,6 +39,7 @@ class BufferedWriter {
   fmt::memory_buffer buf_;
 };
 
+// Numbers as the shortest text that reads back as the same double.
 class CsvWriter final : public PathSink {
  public:
   explicit CsvWriter(std::FILE* f);
@@ -49,9 +50,23 @@ class CsvWriter final : public PathSink {
   BufferedWriter w_;
 };
 
+// The same columns with numbers of at most `decimals` (0..17) decimals (--decimals,
+// shortest_number.hpp writeRounded). A class of its own: CsvWriter's row stays as it is.
+class RoundedCsvWriter final : public PathSink {
+ public:
+  RoundedCsvWriter(std::FILE* f, int decimals);
+  void segment(const Segment& s) override;
+  void finish(const Alarm* alarm) override;
+
+ private:
+  BufferedWriter w_;
+  int decimals_;
+};
+
 class JsonLinesWriter final : public PathSink {
  public:
-  JsonLinesWriter(std::FILE* f, FileNames names) : w_(f), names_(std::move(names)) {}
+  JsonLinesWriter(std::FILE* f, FileNames names, int decimals = -1)
+      : w_(f), names_(std::move(names)), decimals_(decimals) {}
   void segment(const Segment& s) override;
   void message(const SourceLoc& where, const std::string& text) override;
   void warning(const SourceLoc& where, int number, const std::string& text) override;
@@ -60,6 +75,7 @@ class JsonLinesWriter final : public PathSink {
  private:
   BufferedWriter w_;
   FileNames names_;
+  int decimals_;
 };
 
 // Appends `s` as a JSON string literal.

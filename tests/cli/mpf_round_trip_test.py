@@ -3,7 +3,8 @@
 run the MPF again, and the CSV end points, arc centres and feeds agree to 1e-6 (the MPF has six
 decimals). A WCS case with tool radius compensation (G41, NORM approach), arcs in G17/G18/G19, a
 helix with TURN= and a full circle; an MCS case with a rotated frame and a tool length; and a run
-that ends in an alarm (the MPF ends with the alarm comment and M0)."""
+that ends in an alarm (the MPF ends with the alarm comment, M0 and M30). The header: comment
+lines, then the reset block starting with G90."""
 import csv, os, subprocess, sys, tempfile
 
 binary = os.path.abspath(sys.argv[1])
@@ -79,8 +80,10 @@ for coords, text in cases.items():
     p = run("--coords", coords, "-o", mpf, prog)
     check(f"{coords}: MPF written", p.returncode == 0, p.stderr)
     text = open(mpf).read()
-    check(f"{coords}: header", text.startswith(f"; ncoffset compensated path (coords {coords})\nG90"),
-          text[:80])
+    head = text.split("\n")
+    first_block = next(l for l in head if not l.startswith(";"))
+    check(f"{coords}: header", text.startswith(f"; ncoffset compensated path (coords {coords})\n")
+          and first_block.startswith("G90"), text[:80])
     check(f"{coords}: ends with M30", text.endswith("M30\n"), text[-40:])
     p = run("--coords", coords, "-o", b_csv, mpf)
     check(f"{coords}: the MPF runs", p.returncode == 0, p.stderr)
@@ -95,15 +98,17 @@ for coords, text in cases.items():
               all(s in text for s in ("G17\n", "G18\n", "G19\n", "TURN=1", "TURN=2", "K=AC(")), text)
         check("wcs: MSG as a comment", "; MSG: done" in text, text)
 
-# An alarm ends the program with the alarm and M0; the path before it is there.
+# An alarm ends the program with the alarm, M0 and M30; the path before it is there.
 prog = write("ALARM.MPF", "G17 G90 G1 X10 Y0 Z0 F100\nG2 X20 Y0 I3 J0\nM30\n")
 out = os.path.join(d, "alarm.mpf")
 p = run("-o", out, prog)
 check("alarm: exit 2", p.returncode == 2, p.returncode)
 lines = open(out).read().splitlines()
-check("alarm: the block before it", any(l.startswith("N1 G1 X10 Y0 Z0 F100") for l in lines), lines)
-check("alarm: comment then M0", len(lines) >= 2 and lines[-2].startswith("; ALARM 14040 at ")
-      and "ALARM.MPF:2: " in lines[-2] and lines[-1] == "M0", lines[-2:])
+check("alarm: the block before it (MCS: with SUPA)",
+      any(l.startswith("N1 G1 SUPA X10 Y0 Z0 F100") for l in lines), lines)
+check("alarm: comment then M0 and M30", len(lines) >= 3 and lines[-3].startswith("; ALARM 14040 at ")
+      and "ALARM.MPF:2: " in lines[-3] and lines[-2].split(" ;")[0] == "M0" and lines[-1] == "M30",
+      lines[-3:])
 
 print("all round-trip checks hold" if not fails else f"{len(fails)} round-trip checks fail")
 sys.exit(1 if fails else 0)

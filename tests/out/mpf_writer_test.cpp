@@ -27,14 +27,16 @@ std::vector<std::string> program(const std::vector<Segment>& path, const Alarm* 
     for (const auto& s : path) w.segment(s);
     w.finish(alarm);
   }
+  // The lines after the header (MpfWriter.Header).
+  std::string text = readAll(f.get());
+  const std::string header = mpfHeader("wcs");
+  EXPECT_EQ(text.substr(0, header.size()), header);
   std::vector<std::string> out;
-  std::istringstream is(readAll(f.get()));
+  std::istringstream is(text.substr(std::min(header.size(), text.size())));
   for (std::string l; std::getline(is, l);) out.push_back(l);
   return out;
 }
 
-const std::string kHeader = "; ncoffset compensated path (coords wcs)";
-const std::string kG90 = "G90 G71 ; absolute, mm";
 const Vec3 kX{1, 0, 0}, kY{0, 1, 0}, kZ{0, 0, 1};
 
 std::string num(double v) {
@@ -54,6 +56,38 @@ TEST(MpfWriter, Numbers) {
   EXPECT_EQ(num(-1234567.8912345), "-1234567.891235");
 }
 
+// What the positions assume, as comments, then one block of reset words.
+TEST(MpfWriter, Header) {
+  for (const std::string coords : {"mcs", "wcs"}) {
+    std::vector<std::string> l;
+    std::istringstream is(mpfHeader(coords));
+    for (std::string line; std::getline(is, line);) l.push_back(line);
+    ASSERT_GE(l.size(), 5u);
+    EXPECT_EQ(l[0], "; ncoffset compensated path (coords " + coords + ")");
+    for (size_t i = 0; i + 1 < l.size(); ++i) EXPECT_EQ(l[i].rfind("; ", 0), 0u) << l[i];
+    const std::string reset =
+        coords == "mcs" ? "G90 G71 G94 G40 G17 D0 ; reset: " : "G90 G71 G94 G40 G17 ; reset: ";
+    EXPECT_EQ(l.back().rfind(reset, 0), 0u) << l.back();
+    const std::string text = mpfHeader(coords);
+    EXPECT_EQ(text.find(coords == "mcs" ? "(MCS)" : "(WCS)") != std::string::npos, true);
+    EXPECT_EQ(text.find("SUPA") != std::string::npos, coords == "mcs");
+  }
+}
+
+TEST(MpfWriter, NumbersWithDecimals) {
+  auto n = [](double v, int d) {
+    fmt::memory_buffer b;
+    appendNcNumber(b, v, d);
+    return fmt::to_string(b);
+  };
+  EXPECT_EQ(n(30.000000000000004, 3), "30");
+  EXPECT_EQ(n(-7.1e-15, 9), "0");
+  EXPECT_EQ(n(1.0 / 3.0, 0), "0");
+  EXPECT_EQ(n(1.0 / 3.0, 10), "0.3333333333");
+  EXPECT_EQ(n(1e20, 3), "100000000000000000000");  // never an exponent in NC text
+  EXPECT_EQ(n(-2.5e15, 2), "-2500000000000000");
+}
+
 TEST(MpfWriter, LinesFeedOnlyWhenItChangesAndTheEnd) {
   auto p = program({lineSeg(3, Motion::G0, {0, 0, 0}, {0, 0, 5}),
                     lineSeg(4, Motion::G1, {0, 0, 5}, {10, 0, 5}, 100),
@@ -61,9 +95,7 @@ TEST(MpfWriter, LinesFeedOnlyWhenItChangesAndTheEnd) {
                     lineSeg(6, Motion::G0, {10, 1.0 / 3, 5}, {10, 0, 50}),
                     lineSeg(7, Motion::G1, {10, 0, 50}, {0, 0, 50}, 100),
                     lineSeg(8, Motion::G1, {0, 0, 50}, {0, 0, 0}, 12.5)});
-  std::vector<std::string> want = {kHeader,
-                                   kG90,
-                                   "N1 G0 X0 Y0 Z5 ; line 3",
+  std::vector<std::string> want = {"N1 G0 X0 Y0 Z5 ; line 3",
                                    "N2 G1 X10 Y0 Z5 F100 ; line 4",
                                    "N3 G1 X10 Y0.333333 Z5 ; line 5",
                                    "N4 G0 X10 Y0 Z50 ; line 6",
@@ -80,9 +112,7 @@ TEST(MpfWriter, ArcsInEachPlaneWithThePlaneWhenItChanges) {
       arcSeg(3, Motion::G2, {-10, 0, 0}, {0, 0, 10}, {0, 0, 0}, kY),
       arcSeg(4, Motion::G3, {0, 0, 10}, {0, 10, 0}, {0, 0, 0}, kX),
   });
-  std::vector<std::string> want = {kHeader,
-                                   kG90,
-                                   "G17",
+  std::vector<std::string> want = {"G17",
                                    "N1 G2 X0 Y10 Z0 I=AC(0) J=AC(0) F100 ; line 1",
                                    "N2 G3 X-10 Y0 Z0 I=AC(0) J=AC(0) ; line 2",
                                    "G18",
@@ -97,17 +127,17 @@ TEST(MpfWriter, ArcsInEachPlaneWithThePlaneWhenItChanges) {
 TEST(MpfWriter, NegativeNormalReversesTheSense) {
   auto p = program({arcSeg(1, Motion::G2, {5, 1, 2}, {1, 5, 2}, {1, 1, 2}, {0, 0, -1}),
                     arcSeg(2, Motion::G3, {1, 5, 2}, {1, 5, 2}, {1, 1, 2}, {0, -1, 0})});
-  ASSERT_EQ(p.size(), 7u);
-  EXPECT_EQ(p[2], "G17");
-  EXPECT_EQ(p[3], "N1 G3 X1 Y5 Z2 I=AC(1) J=AC(1) F100 ; line 1");
-  EXPECT_EQ(p[4], "G18");
-  EXPECT_EQ(p[5], "N2 G2 X1 Y5 Z2 I=AC(1) K=AC(2) ; line 2");
+  ASSERT_EQ(p.size(), 5u);
+  EXPECT_EQ(p[0], "G17");
+  EXPECT_EQ(p[1], "N1 G3 X1 Y5 Z2 I=AC(1) J=AC(1) F100 ; line 1");
+  EXPECT_EQ(p[2], "G18");
+  EXPECT_EQ(p[3], "N2 G2 X1 Y5 Z2 I=AC(1) K=AC(2) ; line 2");
 }
 
 TEST(MpfWriter, HelixWithTurns) {
   auto p = program({arcSeg(9, Motion::G3, {10, 0, 0}, {0, 10, -6}, {0, 0, 0}, kZ, 40, 2)});
-  ASSERT_EQ(p.size(), 5u);
-  EXPECT_EQ(p[3], "N1 G3 X0 Y10 Z-6 I=AC(0) J=AC(0) TURN=2 F40 ; line 9");
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p[1], "N1 G3 X0 Y10 Z-6 I=AC(0) J=AC(0) TURN=2 F40 ; line 9");
 }
 
 // An arc about a tilted axis (a rotated frame in MCS) cannot be a G2/G3: one-degree chords.
@@ -115,10 +145,10 @@ TEST(MpfWriter, TiltedArcAsChords) {
   const double s = std::sqrt(0.5);
   Segment a = arcSeg(4, Motion::G3, {10, 0, 0}, {0, 10 * s, 10 * s}, {0, 0, 0}, {0, -s, s});
   auto p = program({a});
-  ASSERT_EQ(p.size(), 2u + 1u + 90u + 1u);
-  EXPECT_EQ(p[2], "; G3 about a tilted axis: 90 chords");
-  EXPECT_EQ(p[3].rfind("N1 G1 X9.998477 Y0.123407 Z0.123407 F100 ; line 4", 0), 0u) << p[3];
-  EXPECT_EQ(p[92], "N90 G1 X0 Y7.071068 Z7.071068 ; line 4");
+  ASSERT_EQ(p.size(), 1u + 90u + 1u);
+  EXPECT_EQ(p[0], "; G3 about a tilted axis: 90 chords");
+  EXPECT_EQ(p[1].rfind("N1 G1 X9.998477 Y0.123407 Z0.123407 F100 ; line 4", 0), 0u) << p[1];
+  EXPECT_EQ(p[90], "N90 G1 X0 Y7.071068 Z7.071068 ; line 4");
 }
 
 TEST(MpfWriter, MessagesWarningsFilesAndTheAlarm) {
@@ -139,17 +169,16 @@ TEST(MpfWriter, MessagesWarningsFilesAndTheAlarm) {
     w.finish(nullptr);  // ignored
   }
   std::string text = readAll(f.get());
-  EXPECT_EQ(text,
-            "; ncoffset compensated path (coords mcs)\n"
-            "G90 G71 ; absolute, mm\n"
-            "; file MAIN.MPF\n"
-            "N1 G0 X1 Y0 Z0 ; line 2\n"
-            "; MSG: two lines (MAIN.MPF:3)\n"
-            "; file SUB.SPF\n"
-            "N2 G1 X2 Y0 Z0 F10 ; line 7\n"
-            "; warning 10763: path component of the block is zero (SUB.SPF:8)\n"
-            "; ALARM 14040 at SUB.SPF:9: error in end point of circle\n"
-            "M0\n");
+  EXPECT_EQ(text, mpfHeader("mcs") +
+                      "; file MAIN.MPF\n"
+                      "N1 G0 SUPA X1 Y0 Z0 ; line 2\n"
+                      "; MSG: two lines (MAIN.MPF:3)\n"
+                      "; file SUB.SPF\n"
+                      "N2 G1 SUPA X2 Y0 Z0 F10 ; line 7\n"
+                      "; warning 10763: path component of the block is zero (SUB.SPF:8)\n"
+                      "; ALARM 14040 at SUB.SPF:9: error in end point of circle\n"
+                      "M0 ; incomplete: the source program stopped at the alarm above\n"
+                      "M30\n");
 }
 
 }  // namespace

@@ -6,10 +6,10 @@
 
 namespace ncoffset::cli {
 
-CLI::Validator limitValue(unsigned long long max) {
-  auto parse = [max](std::string& text) -> std::string {
+CLI::Validator limitValue(unsigned long long max, unsigned long long min) {
+  auto parse = [max, min](std::string& text) -> std::string {
     auto bad = [&] {
-      return fmt::format("'{}' is not a whole number 1..{} (decimal digits only)", text, max);
+      return fmt::format("'{}' is not a whole number {}..{} (decimal digits only)", text, min, max);
     };
     if (text.empty() || text.size() > 20) return bad();
     unsigned long long value = 0;
@@ -18,11 +18,11 @@ CLI::Validator limitValue(unsigned long long max) {
       value = value * 10 + static_cast<unsigned>(c - '0');
       if (value > max) return bad();  // max < 2^64 / 10, so the product never wraps
     }
-    if (value < 1) return bad();
+    if (value < min) return bad();
     text = std::to_string(value);
     return {};
   };
-  return CLI::Validator(parse, fmt::format("1..{}", max), "LIMIT");
+  return CLI::Validator(parse, fmt::format("{}..{}", min, max), "LIMIT");
 }
 
 }  // namespace ncoffset::cli

@@ -12,8 +12,8 @@ inline constexpr unsigned long long kLimitMax = 2147483647ULL;
 // The largest --max-blocks: about a day of execution even for fast programs.
 inline constexpr unsigned long long kMaxBlocksMax = 1000000000000ULL;
 
-// A transform for a limit option: accepts 1..max written in decimal digits and hands the
+// A transform for a limit option: accepts min..max written in decimal digits and hands the
 // number on in canonical form (no leading zeros, which CLI11 would read as octal).
-CLI::Validator limitValue(unsigned long long max);
+CLI::Validator limitValue(unsigned long long max, unsigned long long min = 1);
 
 }  // namespace ncoffset::cli

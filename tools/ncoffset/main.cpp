@@ -11,6 +11,7 @@
 #include "file_identity.hpp"
 #include "limit_option.hpp"
 #include "ncoffset/channel.hpp"
+#include "ncoffset/version.hpp"
 #include "out/html_report.hpp"
 #include "out/mpf_writer.hpp"
 #include "out/svg_writer.hpp"
@@ -55,18 +56,22 @@ std::string extensionFormat(const std::string& path) {
 struct Args {
   std::string program, output, format, coords = "mcs", view = "xy", vars;
   std::vector<std::string> inits;
+  int decimals = -1;  // --decimals: -1 the shortest round-trip text
 };
 
 std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
                                                const ncoffset::Channel& channel) {
   auto names = [&channel](int i) -> const std::string& { return channel.fileName(i); };
-  if (a.format == "jsonl") return std::make_unique<ncoffset::out::JsonLinesWriter>(out, names);
+  const int d = a.decimals;
+  if (a.format == "jsonl") return std::make_unique<ncoffset::out::JsonLinesWriter>(out, names, d);
   if (a.format == "svg")
-    return std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view));
+    return std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view),
+                                                      true, d);
   if (a.format == "html")
     return std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(a.view),
-                                                       a.program, a.coords);
-  if (a.format == "mpf") return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names);
+                                                       a.program, a.coords, d);
+  if (a.format == "mpf") return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names, d);
+  if (d >= 0) return std::make_unique<ncoffset::out::RoundedCsvWriter>(out, d);
   return std::make_unique<ncoffset::out::CsvWriter>(out);
 }
 
@@ -142,6 +147,7 @@ int main(int argc, char** argv) {
   CLI::App app{"ncoffset: SINUMERIK 840D sl tool offsets (W1) outside the control"};
   Args a;
   ncoffset::RunOptions options;
+  app.set_version_flag("--version", "ncoffset " NCOFFSET_VERSION_STRING);
   app.add_option("PROGRAM", a.program, "part program (.MPF)")->required();
   app.add_option("--init", a.inits, "init file run before PROGRAM (repeatable, in order)")
       ->allow_extra_args(false);  // one file per --init, so `--init A PROGRAM` works
@@ -154,6 +160,10 @@ int main(int argc, char** argv) {
   app.add_option("--view", a.view, "svg: plane drawn: xy (G17, default) | zx (G18) | yz (G19)")
       ->check(CLI::IsMember({"xy", "zx", "yz"}));
   app.add_option("--vars", a.vars, "write R parameters and user variables as JSON");
+  app.add_option("--decimals", a.decimals,
+                 "round written numbers to at most N decimals, 0..17 (default: shortest "
+                 "round trip; mpf: 6)")
+      ->transform(ncoffset::cli::limitValue(17, 0));
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
       ->capture_default_str()
@@ -185,7 +195,7 @@ int main(int argc, char** argv) {
       ->transform(ncoffset::cli::limitValue(ncoffset::cli::kLimitMax));
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
+  } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // Not app.exit(e): the message quotes the arguments, which are escaped like program text.

@@ -1,0 +1,92 @@
+// The CSV writers (the contract of design.md), in their own translation unit: CsvWriter's row
+// is the hot path of `ncoffset PROGRAM`, and GCC inlines writeShortest and writeUnsigned into
+// it only while little else here calls them (keep it so: docs/performance.md).
+#include <charconv>
+
+#include "out/shortest_number.hpp"
+#include "out/writers.hpp"
+
+namespace ncoffset::out {
+
+namespace {
+// The longest CSV row: a line number (11), motion (2), 7 numbers of at most 32 characters
+// (writeShortest), 8 commas and the newline.
+constexpr size_t kMaxRow = 320;
+// With --decimals: numbers of at most kRoundedRoom characters (writeRounded).
+static_assert(24 + 7 * kRoundedRoom <= kMaxRow);
+
+constexpr const char* kHeader = "line,motion,x,y,z,cx,cy,cz,feed\n";
+
+}  // namespace
+
+CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
+  fmt::format_to(fmt::appender(w_.buf()), kHeader);
+}
+
+void CsvWriter::segment(const Segment& s) {
+  // Written in place at the end of the buffer: room for 9 fields of at most 32 characters is
+  // made first, the unused part is cut off after the row.
+  auto& b = w_.buf();
+  const size_t used = b.size();
+  b.resize(used + kMaxRow);
+  char* const row = b.data() + used;
+  char* p = s.line >= 0 ? writeUnsigned(row, static_cast<unsigned>(s.line))
+                        : std::to_chars(row, row + 11, s.line).ptr;
+  const char* m = motionName(s.motion);
+  *p++ = ',';
+  *p++ = m[0];
+  *p++ = m[1];
+  for (double v : {s.end.x, s.end.y, s.end.z}) {
+    *p++ = ',';
+    p = writeShortest(p, v);
+  }
+  if (s.motion == Motion::G2 || s.motion == Motion::G3) {
+    for (double v : {s.centre.x, s.centre.y, s.centre.z}) {
+      *p++ = ',';
+      p = writeShortest(p, v);
+    }
+  } else {
+    *p++ = ',';
+    *p++ = ',';
+    *p++ = ',';
+  }
+  *p++ = ',';
+  if (s.has_feed) p = writeShortest(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
+  *p++ = '\n';
+  b.resize(used + static_cast<size_t>(p - row));
+  w_.lineDone();
+}
+
+void CsvWriter::finish(const Alarm*) {
+  w_.flush();
+}
+
+RoundedCsvWriter::RoundedCsvWriter(std::FILE* f, int decimals) : w_(f), decimals_(decimals) {
+  fmt::format_to(fmt::appender(w_.buf()), kHeader);
+}
+
+void RoundedCsvWriter::segment(const Segment& s) {
+  char row[kMaxRow];
+  char* p = std::to_chars(row, row + 11, s.line).ptr;
+  const char* m = motionName(s.motion);
+  *p++ = ',';
+  *p++ = m[0];
+  *p++ = m[1];
+  const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
+  for (int i = 0; i < 6; ++i) {  // the end point; the centre of an arc, else empty fields
+    *p++ = ',';
+    if (i < 3) p = writeRounded(p, s.end[i], decimals_);
+    if (i >= 3 && arc) p = writeRounded(p, s.centre[i - 3], decimals_);
+  }
+  *p++ = ',';
+  if (s.has_feed) p = writeRounded(p, s.feed, decimals_);
+  *p++ = '\n';
+  w_.buf().append(row, p);
+  w_.lineDone();
+}
+
+void RoundedCsvWriter::finish(const Alarm*) {
+  w_.flush();
+}
+
+}  // namespace ncoffset::out
