@@ -217,7 +217,12 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     return;
   }
   if (name == "OFFN") {
-    modal_.offn = toMm(value());
+    // A contour offset (PM-NC "tool radius compensation"): within the number range of lengths.
+    const double v = toMm(value());
+    if (!(std::fabs(v) <= 1e9))
+      raise(AlarmNumber::ValueRange,
+            fmt::format("value range exceeded: OFFN={} (|OFFN| <= 1e9 mm)", v));
+    modal_.offn = v;
     return;
   }
   if (name == "DISR" || name == "DISCL" || name == "DISRP" || name == "FAD") {

@@ -1,5 +1,7 @@
 #include "place/placement.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 namespace ncoffset::place {
@@ -51,13 +53,40 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
   return s;
 }
 
+namespace {
+
+// A compensated position beyond the machine's number range (a huge OFFN or tool radius next to
+// a contour near the limit): the value range alarm of the block it belongs to, as for
+// programmed positions (interp/motion_builder.cpp), never a silently huge coordinate.
+void checkRange(const Segment& s, int line) {
+  const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
+  for (int i = 0; i < 3; ++i) {
+    const double v[2] = {s.end[i], arc ? s.centre[i] : 0.0};
+    for (double x : v)
+      if (!(std::fabs(x) <= 1e9))
+        throw AlarmError(AlarmNumber::ValueRange,
+                         fmt::format("value range exceeded: compensated position {} of axis {} "
+                                     "beyond 1e9 mm",
+                                     x, "XYZ"[i]),
+                         line);
+  }
+}
+
+}  // namespace
+
 core::Feedback Placement::motion(const MotionBlock& m) {
-  sink_.segment(toSegment(m, core::geometryOf(m)));
+  const Segment s = toSegment(m, core::geometryOf(m));
+  // Blocks that radius compensation made or moved (corner circles, approach and retraction
+  // lines) carry its settings; programmed positions were checked by the interpreter.
+  if (m.trc.mode != core::TrcMode::Off) checkRange(s, m.line);
+  sink_.segment(s);
   return {};
 }
 
 void Placement::element(const MotionBlock& like, const Geometry& g) {
-  sink_.segment(toSegment(like, g));
+  const Segment s = toSegment(like, g);
+  checkRange(s, like.line);
+  sink_.segment(s);
 }
 
 void Placement::warning(const MotionBlock& m, int number, const std::string& text) {
