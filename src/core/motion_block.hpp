@@ -43,4 +43,16 @@ inline Geometry geometryOf(const MotionBlock& m) {
   return {m.motion, m.start, m.end, m.centre, m.applicate, m.turns};
 }
 
+// A copy of `like` with the geometry `g`.
+inline MotionBlock withGeometry(const MotionBlock& like, const Geometry& g) {
+  MotionBlock b = like;
+  b.motion = g.motion;
+  b.start = g.start;
+  b.end = g.end;
+  b.centre = g.centre;
+  b.applicate = g.applicate;
+  b.turns = g.turns;
+  return b;
+}
+
 }  // namespace ncoffset::core

@@ -50,14 +50,7 @@ class Stage {
 };
 
 inline void Stage::element(const MotionBlock& like, const Geometry& g) {
-  MotionBlock b = like;
-  b.motion = g.motion;
-  b.start = g.start;
-  b.end = g.end;
-  b.centre = g.centre;
-  b.applicate = g.applicate;
-  b.turns = g.turns;
-  motion(b);
+  motion(withGeometry(like, g));
 }
 
 }  // namespace ncoffset::core

@@ -50,15 +50,7 @@ core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Eleme
 }
 
 MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
-  const core::Geometry g = geometry(like, e);
-  MotionBlock b = like;
-  b.motion = g.motion;
-  b.start = g.start;
-  b.end = g.end;
-  b.centre = g.centre;
-  b.applicate = g.applicate;
-  b.turns = g.turns;
-  return b;
+  return core::withGeometry(like, geometry(like, e));
 }
 
 MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const {
