@@ -22,8 +22,11 @@ void VariableStore::resizeR(size_t n) {
 
 double VariableStore::r(double number) const {
   if (number < 0 || number >= static_cast<double>(r_.size()) || number != std::floor(number))
-    raise(AlarmNumber::ArrayIndex1,
-          fmt::format("illegal array index: R{} (R0..R{} per MD28050)", number, r_.size() - 1));
+    raise(
+        AlarmNumber::ArrayIndex1,
+        r_.empty()
+            ? fmt::format("illegal array index: R{} (no R parameters: MD28050 = 0)", number)
+            : fmt::format("illegal array index: R{} (R0..R{} per MD28050)", number, r_.size() - 1));
   return r_[static_cast<size_t>(number)];
 }
 
@@ -98,12 +101,17 @@ UserVariable VariableStore::prepare(const lang::Decl& d) const {
   size_t count = 1;
   if (d.dims[0] > 0) {
     count = static_cast<size_t>(d.dims[0]) * static_cast<size_t>(d.dims[1] > 0 ? d.dims[1] : 1);
-    if (count > limits_.max_array_elements || element_count_ + count > limits_.max_total_elements)
-      raise(
-          AlarmNumber::ArrayTooLarge,
-          fmt::format("array {} has {} elements: more than {} in one array (--max-array-elements) "
-                      "or {} in all (--max-total-elements)",
-                      name, count, limits_.max_array_elements, limits_.max_total_elements));
+    // Each limit named by itself: which one the array breaks.
+    if (count > limits_.max_array_elements)
+      raise(AlarmNumber::ArrayTooLarge,
+            fmt::format("array {} has {} elements: more than {} in one array "
+                        "(--max-array-elements)",
+                        name, count, limits_.max_array_elements));
+    if (element_count_ + count > limits_.max_total_elements)
+      raise(AlarmNumber::ArrayTooLarge,
+            fmt::format("array {} has {} elements: with the {} of the live arrays more than {} in "
+                        "all (--max-total-elements)",
+                        name, count, element_count_, limits_.max_total_elements));
   }
   v.data.assign(count, initialValue(d.type));
   return v;

@@ -20,6 +20,12 @@ inline bool isDigit(char c) {
 inline bool isIdentChar(char c) {
   return isAlpha(c) || isDigit(c);
 }
+// PM-JP "Program jumps": a label name starts with two letters or underscores (`MARK1:`,
+// `_A:`); `L12:` or `X1:` is no label.
+inline bool isLabelStart(char first, char second) {
+  auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || c == '_'; };
+  return letter(first) && letter(second);
+}
 
 // Up to eight characters packed into one integer (first character lowest), so that a name is
 // looked up in a keyword list by one switch instead of string comparisons; names longer than

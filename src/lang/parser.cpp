@@ -19,9 +19,12 @@ static_assert(kMaxExpressionDepth == Limits::kMaxExpressionDepth);
 
 void Parser::syntax(const std::string& what) const {
   std::string near(s_.substr(i_ < s_.size() ? i_ : s_.size(), 24));
-  raise(AlarmNumber::SyntaxError,
-        "syntax error in text at column " + std::to_string(column()) +
-            (near.empty() ? std::string(" (end of block)") : " near '" + near + "'") + ": " + what);
+  // The column goes with the alarm too, for the caret under the source line.
+  throw AlarmError(AlarmNumber::SyntaxError,
+                   "syntax error in text at column " + std::to_string(column()) +
+                       (near.empty() ? std::string(" (end of block)") : " near '" + near + "'") +
+                       ": " + what,
+                   0, column());
 }
 
 void Parser::parse() {
@@ -44,6 +47,9 @@ void Parser::parse() {
     while (j < s_.size() && isIdentChar(s_[j])) ++j;
     if (j < s_.size() && s_[j] == ':' && j - i_ >= 2) {
       if (j - i_ > 32) syntax("labels have at most 32 characters");
+      if (!isLabelStart(s_[i_], s_[i_ + 1]))
+        syntax(std::string(s_.substr(i_, j - i_)) +
+               ": is no label (a label name starts with two letters or underscores)");
       b_.label = s_.substr(i_, j - i_);
       i_ = j + 1;
     }
@@ -143,7 +149,7 @@ LineHead scanLineHead(std::string_view s) {
   }
   size_t j = i;
   while (j < s.size() && isIdentChar(s[j])) ++j;
-  if (j < s.size() && s[j] == ':' && j - i >= 2 && isAlpha(s[i])) {
+  if (j < s.size() && s[j] == ':' && j - i >= 2 && isLabelStart(s[i], s[i + 1])) {
     h.label = s.substr(i, j - i);
     i = j + 1;
     spaces();
