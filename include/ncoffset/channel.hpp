@@ -15,8 +15,11 @@ namespace ncoffset {
 
 // Explicit resource limits (docs/limits.md). Exceeding one ends the run with an alarm.
 struct Limits {
-  size_t max_line_length = 65536;       // characters in one block
-  long long max_blocks = 100000000;     // executed blocks (endless-loop guard)
+  size_t max_line_length = 65536;    // characters in one block
+  long long max_blocks = 100000000;  // executed blocks (endless-loop guard)
+  // Blocks executed since the last motion: ends a loop without motion (WHILE TRUE, a jump
+  // back, pass counts of a subprogram that only computes) in about a second.
+  long long max_blocks_without_motion = 10000000;
   int max_expression_depth = 64;        // operator / parenthesis nesting in one expression
   int max_program_levels = 16;          // main program + 15 subprogram levels (PM-NC p493)
   int max_control_depth = 16;           // nested control structures per program level

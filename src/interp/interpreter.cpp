@@ -81,6 +81,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   ended_ = false;
   flow_.begin(program);
   vars_.beginRun();
+  without_motion_ = 0;  // an init file's data blocks do not count against the program
   std::string_view text;
   const size_t max_len = options_.limits.max_line_length;
   while (!ended_) {
@@ -103,6 +104,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
       raise(AlarmNumber::BlockLimit,
             fmt::format("limit of {} executed blocks reached (endless loop?); raise --max-blocks",
                         options_.limits.max_blocks));
+    if (++without_motion_ > options_.limits.max_blocks_without_motion)
+      raise(AlarmNumber::NoMotionLimit,
+            fmt::format("{} blocks executed without any motion (endless loop?); raise "
+                        "--max-blocks-without-motion",
+                        options_.limits.max_blocks_without_motion));
     if (text.size() > max_len)
       raise(AlarmNumber::LineTooLong,
             fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",

@@ -128,6 +128,7 @@ class Interpreter final : public lang::Environment {
   std::string_view line_text_;  // the executing line (a view into its loaded file)
   int file_ = 0;
   long long executed_ = 0;
+  long long without_motion_ = 0;  // blocks executed since the last motion
   size_t for_continue_ = static_cast<size_t>(-1);
   bool ended_ = false;
   bool init_file_ = false;

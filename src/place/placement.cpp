@@ -58,18 +58,27 @@ namespace {
 // A compensated position beyond the machine's number range (a huge OFFN or tool radius next to
 // a contour near the limit): the value range alarm of the block it belongs to, as for
 // programmed positions (interp/motion_builder.cpp), never a silently huge coordinate.
-void checkRange(const Segment& s, int line) {
+bool inRange(const Vec3& p) {  // false for NaN too; one branch for the three axes
+  return (std::fabs(p.x) <= 1e9) & (std::fabs(p.y) <= 1e9) & (std::fabs(p.z) <= 1e9);
+}
+
+[[noreturn]] void outOfRange(const Segment& s, int line) {
   const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
-  for (int i = 0; i < 3; ++i) {
-    const double v[2] = {s.end[i], arc ? s.centre[i] : 0.0};
-    for (double x : v)
-      if (!(std::fabs(x) <= 1e9))
+  for (const Vec3* p : {&s.end, &s.centre})
+    for (int i = 0; i < 3; ++i)
+      if (!(std::fabs((*p)[i]) <= 1e9) && (p == &s.end || arc))
         throw AlarmError(AlarmNumber::ValueRange,
                          fmt::format("value range exceeded: compensated position {} of axis {} "
                                      "beyond 1e9 mm",
-                                     x, "XYZ"[i]),
+                                     (*p)[i], "XYZ"[i]),
                          line);
-  }
+  throw AlarmError(AlarmNumber::ValueRange, "value range exceeded", line);
+}
+
+void checkRange(const Segment& s, int line) {
+  const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
+  if (inRange(s.end) && (!arc || inRange(s.centre))) return;
+  outOfRange(s, line);
 }
 
 }  // namespace

@@ -23,14 +23,15 @@ def run(*args):
     return subprocess.run([binary, *args, prog], capture_output=True, text=True, timeout=20)
 
 
-options = ["--max-blocks", "--max-line-length", "--max-expression-depth", "--max-program-levels",
+options = ["--max-blocks", "--max-blocks-without-motion", "--max-line-length", "--max-expression-depth", "--max-program-levels",
            "--max-control-depth", "--max-variables", "--max-array-elements",
            "--max-total-elements"]
 bad = ["0", "-1", "+5", " 5", "5 ", "0x10", "1e3", "1.5", "", "abc", "99999999999999999999",
        "18446744073709551617"]
 for opt in options:
     # The stack-safe caps (docs/limits.md): line length 4 MiB, expression depth 1000.
-    top = {"--max-blocks": "1000000000000", "--max-line-length": "4194304",
+    top = {"--max-blocks": "1000000000000", "--max-blocks-without-motion": "1000000000000",
+           "--max-line-length": "4194304",
            "--max-expression-depth": "1000"}.get(opt, "2147483647")
     for value in bad + [str(int(top) + 1)]:
         p = run(opt, value)

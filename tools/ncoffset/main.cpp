@@ -168,6 +168,10 @@ int main(int argc, char** argv) {
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
       ->capture_default_str()
       ->transform(ncoffset::cli::limitValue(ncoffset::cli::kMaxBlocksMax));
+  app.add_option("--max-blocks-without-motion", l.max_blocks_without_motion,
+                 "executed blocks since the last motion before alarm 99006")
+      ->capture_default_str()
+      ->transform(ncoffset::cli::limitValue(ncoffset::cli::kMaxBlocksMax));
   app.add_option("--max-line-length", l.max_line_length, "characters per block (alarm 99001)")
       ->capture_default_str()
       ->transform(ncoffset::cli::limitValue(ncoffset::Limits::kMaxLineLength));
