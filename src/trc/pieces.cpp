@@ -10,8 +10,7 @@ namespace ncoffset::trc {
 
 using core::MotionBlock;
 using core::TrcStrategy;
-using detail::kEps;
-using detail::kZero;
+namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
@@ -105,7 +104,7 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
     const double r = e.radius();
     const double k = e.ccw ? -s : s;  // the left side of a ccw arc is its inside
     const double ra = r + k * r0, rb = geom::length(e.p1 - e.c) + k * r1;
-    if (ra <= kEps || rb <= kEps)
+    if (ra <= tol::kPoint || rb <= tol::kPoint)
       raise(10758, "curvature radius with variable compensation value too small");
     p.compensated = e;
     p.compensated.p0 = e.c + (ra / r) * (e.p0 - e.c);
@@ -138,7 +137,7 @@ void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
     p.restart = true;
     return;
   }
-  compensateInto(p, m, old_r, std::fabs(old_r - new_r) < kZero ? old_r : new_r);
+  compensateInto(p, m, old_r, std::fabs(old_r - new_r) <= tol::kPoint ? old_r : new_r);
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) {

@@ -13,7 +13,6 @@ namespace ncoffset::trc {
 
 using core::MotionBlock;
 using core::TrcMode;
-using detail::kZero;
 using geom::Element;
 
 void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
@@ -37,7 +36,7 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
   switch (state_) {
     case State::Off: {
       // (Here, not in startSelection: the path of every block without compensation.)
-      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > kZero;
+      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > geom::tol::kPoint;
       if (!wants || !planeMotion(m))
         emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
       else

@@ -90,7 +90,7 @@ class RadiusCompensation final : public core::Stage {
     const PlaneAxes pa = planeAxes(m.plane);
     const geom::Vec2 d{m.end[pa.abscissa] - m.start[pa.abscissa],
                        m.end[pa.ordinate] - m.start[pa.ordinate]};
-    return geom::length(d) > detail::kZero;
+    return geom::length(d) > geom::tol::kPoint;  // a shorter motion is none
   }
 
   // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.
