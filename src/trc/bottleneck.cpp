@@ -29,7 +29,20 @@ void RadiusCompensation::bridge(Piece& next, bool needed) {
   const Element& later = next.r0 == next.r1 ? next.compensated : changed;
   const geom::Box later_box = next.r0 == next.r1 ? next.box : geom::Box(later);
   std::optional<std::pair<size_t, Vec2>> found;
-  for (size_t j = window_.size() - 2; j-- > 0;) {
+  size_t start = window_.size() - 2;
+  if (!window_[start].valid) {
+    // Elements without equidistant just before `next` (an inside arc with r = R): where the
+    // valid element before them ends, `next` may start (tol::kPoint); they meet there.
+    size_t j = start;
+    while (j > 0 && !window_[j].valid) --j;
+    const Piece& c = window_[j];
+    if (c.index >= oldest && !c.emitted && (!c.approach || needed) &&
+        geom::length(c.compensated.p1 - later.p0) < tol::kPoint) {
+      found = {j, c.compensated.p1};
+      start = settings_.collision == CollisionCheck::Cdon ? j : 0;  // CDON searches on
+    }
+  }
+  for (size_t j = start; j-- > 0;) {
     const Piece& c = window_[j];
     if (c.index < oldest || c.emitted) break;
     if (!c.valid || (c.approach && !needed)) continue;
