@@ -57,7 +57,7 @@ RadiusCompensation::Piece RadiusCompensation::approachLine(Piece& first) {
 void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
   const Vec2 p0 = approach.programmed.p0;
   const Vec2 p1 = first.programmed.p0;
-  const double r = std::fabs(settings_.radius), s = first.side;
+  const double r = first.r0, s = first.side;  // the value at the contour's start
   std::optional<Vec2> t = geom::tangentPoint(p0, p1, r, s, true);
   if (!t)
     throw AlarmError(

@@ -81,10 +81,13 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
     return;
   }
   if (sideOf(m.trc) != side()) settings_ = m.trc;  // the side of the first element counts
-  const double r = std::fabs(settings_.radius);
-  Piece first = compensate(m, r, r);
+  // The first element starts at the value of the selection block; a new value programmed in it
+  // (D, T) is spread over it like in any later block (details Q8).
+  const double r0 = std::fabs(selection_.trc.radius), r1 = std::fabs(m.trc.radius);
+  Piece first = compensate(m, r0, std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1);
   if (!first.valid) detail::collision(m.line, settings_.check_blocks);  // no element to approach
   Piece approach = approachLine(first);
+  settings_ = m.trc;  // the next block starts from this one's value
   approach.waiting = std::move(waiting_);
   waiting_.clear();
   window_.clear();
