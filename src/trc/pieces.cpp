@@ -3,6 +3,7 @@
 // a compensated element back as a block of the channel.
 #include <cmath>
 
+#include "core/inline_step.hpp"
 #include "trc/compensation_internal.hpp"
 #include "trc/radius_compensation.hpp"
 
@@ -25,10 +26,20 @@ Element RadiusCompensation::toElement(const MotionBlock& m) const {
     e.ccw = m.motion == Motion::G3;
     e.turns = m.turns;
   }
+  if (!metric_.identity) toMetric(e);
   return e;
 }
 
-core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Element& e) const {
+void RadiusCompensation::toMetric(Element& e) const {
+  // A scaling frame: the machine's lengths (plane_metric.hpp).
+  e.p0 = metric_.to(e.p0);
+  e.p1 = metric_.to(e.p1);
+  e.c = metric_.to(e.c);
+}
+
+namespace {
+// The geometry of plane element `e` (program coordinates) as a motion of block `like`.
+NCOFFSET_INLINE_STEP core::Geometry planeGeometry(const MotionBlock& like, const Element& e) {
   PlaneAxes pa = planeAxes(like.plane);
   core::Geometry g{like.motion, like.start, like.end, like.centre, like.applicate, like.turns};
   g.start[pa.abscissa] = e.p0.a;
@@ -46,6 +57,18 @@ core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Eleme
     g.motion = Motion::G1;
   }
   return g;
+}
+
+}  // namespace
+
+core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Element& e) const {
+  if (metric_.identity) return planeGeometry(like, e);
+  // From the machine's lengths back to the program's coordinates (plane_metric.hpp).
+  Element back = e;
+  back.p0 = metric_.from(e.p0);
+  back.p1 = metric_.from(e.p1);
+  back.c = metric_.from(e.c);
+  return planeGeometry(like, back);
 }
 
 MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {

@@ -23,6 +23,21 @@ void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
     detail::notModelled("a frame change while compensation is active");
 }
 
+geom::PlaneMetric RadiusCompensation::planeMetric(const MotionBlock& m) {
+  // The tool radius is physical: not scaled by SCALE or a scaling settable frame (Mitsubishi
+  // M700V PM 13.20, GSK980MDc p58 say so; the Siemens frame components hold no tool data;
+  // docs/radius-compensation.md "Frames").
+  if (m.frame.isIdentity()) return {};
+  const PlaneAxes pa = planeAxes(m.plane);
+  Vec3 ea, eo;
+  ea[pa.abscissa] = 1;
+  eo[pa.ordinate] = 1;
+  const Vec3 a = m.frame.linear() * ea, o = m.frame.linear() * eo;
+  // (A programmed circle under different factors is an ellipse: the interpreter stops it with
+  // 99012 before it gets here.)
+  return geom::PlaneMetric::fromGram(dot(a, a), dot(a, o), dot(o, o));
+}
+
 void RadiusCompensation::blockWithoutMotion() {
   if (state_ == State::Off) return;
   if (++dummy_blocks_ > settings_.max_dummy_blocks)
@@ -60,6 +75,7 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   settings_ = m.trc;
   selection_ = m;
+  metric_ = planeMetric(m);
   state_ = State::Selecting;
   dummy_blocks_ = 0;
 }

@@ -176,7 +176,8 @@ void SmoothApproach::pass(const MotionBlock& m) {
   // hasPlaneMotion(m) without its square root (asked for every block).
   PlaneAxes pa = planeAxes(m.plane);
   if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > tol::kPoint ||
-      std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > tol::kPoint) last_ = LastContour{m.plane, m.motion, m.start, m.end, m.centre};
+      std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > tol::kPoint)
+    last_ = LastContour{m.plane, m.motion, m.start, m.end, m.centre};
   last_trc_mode_ = m.trc.mode;
   last_trc_radius_ = m.trc.radius;
   out_.motion(m);
