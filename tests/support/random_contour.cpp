@@ -337,7 +337,10 @@ RandomContour randomContour(unsigned seed, int index, int decimals, const Genera
     c.cdon = u(rng) < 0.5;
     c.radius = std::round((0.5 + 4.5 * u(rng)) * 1000) / 1000;
     c.decimals = decimals;
-    if (opt.differential) c.curve_insert_limit = 0;
+    if (opt.differential) {  // LinuxCNC: an arc at every convex corner, no bottleneck detection
+      c.curve_insert_limit = 0;
+      c.g451 = c.cdon = false;
+    }
     const double side = sideOf(c.left);
     Ideal ideal = idealContour(rng, c.radius, side);
     c.ccw = ideal.ccw;
