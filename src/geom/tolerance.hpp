@@ -6,9 +6,12 @@
 // increments per mm, 1 um); ncoffset computes in doubles and promises its rows to 1e-6 mm (the
 // golden cases compare to that). Geometric decisions (the same point, on an element, tangent,
 // r = R) use kPoint = 1e-6 mm: far above the rounding noise of doubles on coordinates up to a few
-// metres, far below the increment, so no decision changes a row by more than the promise. An
-// element radius compensation would insert (a transition circle, the arc of a KONT approach) is
-// left out below half an increment, kInsert: the control cannot traverse it.
+// metres, far below the increment, so no such decision moves a point by more than the promise.
+// A transition element (corner circle, DISC curve) shorter than half an increment, kInsert, is
+// not inserted (the control cannot traverse it), and two curves that meet at so small an angle
+// that their crossing is lost in its own error are joined where the first ends when their ends
+// are within kInsert: that moves a corner along the path by at most kInsert and off the
+// equidistant by at most kInsert^2 / 2R.
 #pragma once
 
 namespace ncoffset::geom::tol {
@@ -21,9 +24,9 @@ inline constexpr double kIncrement = 1e-3;
 // equidistant (r = R); two compensation values closer than this are equal; a point this far on
 // the material side of a tangent line is not behind it.
 inline constexpr double kPoint = 1e-6;
-// The shortest transition element radius compensation inserts (mm): a G450 circle or DISC curve
-// whose chord is shorter is replaced by the intersection of the equidistants, a KONT arc by
-// nothing (half an increment: such an element has no motion on the control).
+// The shortest transition element radius compensation inserts at a corner (mm): a G450 circle
+// or DISC curve whose chord is shorter is replaced by the intersection of the equidistants (half
+// an increment: such an element has no motion on the control).
 inline constexpr double kInsert = 0.5 * kIncrement;
 // How far the chords of a DISC transition curve may deviate from the curve (mm): one increment.
 inline constexpr double kChord = kIncrement;
