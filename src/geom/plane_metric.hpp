@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "geom/arc.hpp"
+#include "geom/tolerance.hpp"
 
 namespace ncoffset::geom {
 
@@ -22,8 +23,9 @@ struct PlaneMetric {
   // From the Gram matrix [[g11, g12], [g12, g22]] of the plane's unit vectors' images.
   static PlaneMetric fromGram(double g11, double g12, double g22) {
     PlaneMetric m;
-    constexpr double kSame = 1e-12;  // a frame of length-preserving parts
-    if (std::fabs(g11 - 1) < kSame && std::fabs(g22 - 1) < kSame && std::fabs(g12) < kSame)
+    // A frame of length-preserving parts, up to the rounding of its products.
+    if (std::fabs(g11 - 1) < tol::kNumeric && std::fabs(g22 - 1) < tol::kNumeric &&
+        std::fabs(g12) < tol::kNumeric)
       return m;
     m.identity = false;
     m.m11 = std::sqrt(g11);

@@ -33,11 +33,13 @@ inline constexpr double kChord = kIncrement;
 // Unit directions whose cross product (the sine of their angle) is below this are parallel or
 // antiparallel (a reversal is a 180 degree turn within it).
 inline constexpr double kParallel = 1e-12;
-// The turn condition of bottleneck detection: the new element turns towards the compensation
-// side at a crossing when the sine of its turn exceeds this (W1 2.4.8, details Q5).
+// A turn whose sine is below this is no turn: the turn condition of bottleneck detection (the new
+// element turns towards the compensation side at a crossing when the sine of its turn exceeds
+// this, W1 2.4.8, details Q5); the tangents of a DISC curve that do not meet.
 inline constexpr double kTurn = 1e-9;
 // Guards of the arithmetic only, never a geometric decision: a zero denominator, a zero sweep (an
-// arc whose end is its start is a full circle), concentric circles.
+// arc whose end is its start is a full circle), concentric circles, a frame whose products are
+// lengths-preserving up to their rounding, DISC = 100.
 inline constexpr double kNumeric = 1e-12;
 
 // A point at fraction u of an element of length `len` (Crossing::u1/u2, Crossing::len1/len2) lies
