@@ -58,9 +58,9 @@ struct RandomContour {
 };
 
 struct GeneratorOptions {
-  // Corners the differential test leaves out (tests/differential/README.md): designed corners
-  // below 15 degrees outside and 5 degrees inside, and MD20230 = 0 written into the program
-  // (LinuxCNC inserts an arc at every convex corner).
+  // For the differential test against LinuxCNC (tests/differential/README.md): no designed
+  // corners below 15 degrees outside and 5 degrees inside, G450 and CDOF, MD20230 = 0 written
+  // into the program (LinuxCNC inserts an arc at every convex corner).
   bool differential = false;
 };
 

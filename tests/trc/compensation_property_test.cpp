@@ -227,11 +227,13 @@ TEST(CompensationProperty, RandomContoursWithArcsStayAtTheRadius) {
 // than R), each written with 3, 4 and 6 decimals. Every run must end without alarm and without
 // omitted blocks, and every sampled point of every compensated row between the approach and
 // the retraction must keep at least R - 1e-6 from the contour (no gouge) and at most R + 1e-6
-// where the path follows an element or goes round a corner on a circle, R / cos(delta / 2) +
-// 1e-6 where it takes the intersection at an outside corner (G451, or G450 below MD20230).
-// The check is geometry of its own: it never calls the compensation code.
+// where the path follows an element or goes round a corner on a circle; where it takes the
+// intersection at an outside corner (G451, or G450 below MD20230), at most as far from the corner
+// as the crossing of the extended equidistants (which the check computes itself). The check is
+// geometry of its own: it never calls the compensation code.
 //
-// Size: NCOFFSET_PROPERTY_CONTOURS contours (default 300 for ctest); the full size is
+// Size: NCOFFSET_PROPERTY_CONTOURS contours (default 300 for ctest; NCOFFSET_PROPERTY_SHOW: how
+// many failures to print, default 3); the full size is
 //   NCOFFSET_PROPERTY_CONTOURS=5000 build/tests/ncoffset_unit_tests
 //     --gtest_filter='CompensationProperty.RandomRoundedContours*'
 // (docs/radius-compensation.md, "How it is checked").
@@ -329,9 +331,7 @@ Offset offsetNear(const CheckElement& e, bool at_end, double radius, double side
   }
   o.circle = true;
   o.c = e.c;
-  const double rho = std::hypot(q.x - e.c.x, q.y - e.c.y);
   o.r = std::hypot(q.x + radius * n.x - e.c.x, q.y + radius * n.y - e.c.y);
-  (void)rho;
   return o;
 }
 
