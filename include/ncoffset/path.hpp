@@ -22,6 +22,9 @@ struct Segment {
   Vec3 normal{0, 0, 1};  // arcs: unit normal; motion G2/G3 is the sense viewed from +normal
   int turns = 0;         // arcs: additional full turns (TURN=)
   double feed = 0;       // mm/min (G94) or mm/rev (G95) as programmed; 0 for G0
+  // false: rapid traverse. G0 rows, and the G2/G3 corner circle (or the DISC chords) radius
+  // compensation inserts before a G0 block: it moves with that block's data (PM-F 840Di 11/2006
+  // p364), at rapid traverse.
   bool has_feed = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geom/tolerance.hpp"
 #include "ncoffset/geometry.hpp"
 
 namespace ncoffset::geom {
@@ -11,20 +12,54 @@ double angleOf(Vec2 c, Vec2 p) {
   return std::atan2(p.o - c.o, p.a - c.a);
 }
 
-// Fraction of the arc's sweep at which angle `ang` lies, measured from p0 in the direction of
-// travel; in [0, 1] on the arc, the rest of the circle maps to the nearer extension.
-double arcFraction(const Element& e, double ang) {
-  double s = e.sweep();
-  double a0 = angleOf(e.c, e.p0);
-  double d = e.ccw ? ang - a0 : a0 - ang;
+// The sweep of an arc from start angle a0 (Element::sweep without computing a0 again).
+double sweepFrom(const Element& e, double a0) {
+  double s = e.ccw ? angleOf(e.c, e.p1) - a0 : a0 - angleOf(e.c, e.p1);
+  s = std::fmod(s, 2 * kPi);
+  if (s < 0) s += 2 * kPi;
+  if (s < tol::kNumeric) s = 2 * kPi;  // end on start: a full circle
+  s += 2 * kPi * e.turns;
+  return e.ccw ? s : -s;
+}
+
+// What intersect needs of an element, computed once for all its crossings: for a line its
+// direction, for an arc its start angle and sweep; and its length.
+struct Param {
+  Vec2 d;            // line: p1 - p0
+  double dd = 0;     // line: |d|^2
+  double a0 = 0;     // arc: angle of p0 about c
+  double total = 0;  // arc: |sweep|
+  double len = 0;
+};
+
+Param paramOf(const Element& e) {
+  Param q;
+  if (!e.arc) {
+    q.d = e.p1 - e.p0;
+    q.dd = dot(q.d, q.d);
+    q.len = std::sqrt(q.dd);
+  } else {
+    q.a0 = angleOf(e.c, e.p0);
+    q.total = std::fabs(sweepFrom(e, q.a0));
+    q.len = e.radius() * q.total;
+  }
+  return q;
+}
+
+// Fraction of the element at point p (on its line / circle). For an arc: of the sweep, measured
+// from p0 in the direction of travel; in [0, 1] on the arc, the rest of the circle maps to the
+// nearer extension.
+double fractionAt(const Element& e, const Param& q, Vec2 p) {
+  if (!e.arc) return q.dd > 0 ? dot(p - e.p0, q.d) / q.dd : 0.0;
+  const double ang = angleOf(e.c, p);
+  double d = e.ccw ? ang - q.a0 : q.a0 - ang;
   d = std::fmod(d, 2 * kPi);
   if (d < 0) d += 2 * kPi;
-  double total = std::fabs(s);
-  double u = d / total;
+  double u = d / q.total;
   // Beyond the end: closer to the end or (going backwards) to the start?
   if (u > 1) {
-    double past_end = d - total, before_start = 2 * kPi - d;
-    if (before_start < past_end) u = -before_start / total;
+    double past_end = d - q.total, before_start = 2 * kPi - d;
+    if (before_start < past_end) u = -before_start / q.total;
   }
   return u;
 }
@@ -32,13 +67,7 @@ double arcFraction(const Element& e, double ang) {
 
 double Element::sweep() const {
   if (!arc) return 0;
-  double a0 = angleOf(c, p0), a1 = angleOf(c, p1);
-  double s = ccw ? a1 - a0 : a0 - a1;
-  s = std::fmod(s, 2 * kPi);
-  if (s < 0) s += 2 * kPi;
-  if (s < 1e-12) s = 2 * kPi;  // end on start: a full circle
-  s += 2 * kPi * turns;
-  return ccw ? s : -s;
+  return sweepFrom(*this, angleOf(c, p0));
 }
 
 Vec2 Element::startTangent() const {
@@ -61,12 +90,13 @@ std::optional<Element> equidistant(const Element& e, double d) {
     o.p1 = e.p1 + d * n;
     return o;
   }
-  double r = e.radius();
-  double r2 = e.ccw ? r - d : r + d;  // the left side of a ccw arc is its inside
-  if (r2 <= 1e-9) return std::nullopt;
-  double k = r2 / r;
-  o.p0 = e.c + k * (e.p0 - e.c);
-  o.p1 = e.c + k * (e.p1 - e.c);
+  // The left side of a ccw arc is its inside. Each end keeps |d| from its own end point, so a
+  // spiral keeps its change of radius.
+  const double r0 = e.radius(), r1 = length(e.p1 - e.c);
+  const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
+  if (q0 <= tol::kPoint || q1 <= tol::kPoint) return std::nullopt;  // r <= R: none
+  o.p0 = e.c + (q0 / r0) * (e.p0 - e.c);
+  o.p1 = e.c + (q1 / r1) * (e.p1 - e.c);
   return o;
 }
 
@@ -83,38 +113,39 @@ Vec2 tangentAt(const Element& e, Vec2 p) {
   return e.ccw ? leftNormal(r) : -1.0 * leftNormal(r);
 }
 
-std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
+namespace {
+// The crossings of the lines and circles of e1 and e2 (an arc: its circle through p0), with the
+// parameters of q1, q2 (which may belong to other elements of the same lines / circles).
+std::vector<Crossing> intersectCircles(const Element& e1, const Element& e2, const Param& q1,
+                                       const Param& q2) {
   std::vector<Crossing> out;
-  auto lineParam = [](const Element& l, Vec2 p) {
-    Vec2 d = l.p1 - l.p0;
-    double dd = dot(d, d);
-    return dd > 0 ? dot(p - l.p0, d) / dd : 0.0;
-  };
-  auto param = [&](const Element& e, Vec2 p) {
-    return e.arc ? arcFraction(e, angleOf(e.c, p)) : lineParam(e, p);
+  auto crossing = [&](Vec2 p) {
+    return Crossing{p, fractionAt(e1, q1, p), fractionAt(e2, q2, p), q1.len, q2.len};
   };
   if (!e1.arc && !e2.arc) {
-    Vec2 d1 = e1.p1 - e1.p0, d2 = e2.p1 - e2.p0;
+    const Vec2 d1 = q1.d, d2 = q2.d;
     double den = cross(d1, d2);
-    if (std::fabs(den) < 1e-12 * length(d1) * length(d2)) return out;  // parallel
+    if (std::fabs(den) < tol::kNumeric * q1.len * q2.len) return out;  // parallel
     double u = cross(e2.p0 - e1.p0, d2) / den;
     Vec2 p = e1.p0 + u * d1;
-    out.push_back({p, u, lineParam(e2, p)});
+    Crossing x = crossing(p);
+    x.u1 = u;
+    out.push_back(x);
     return out;
   }
   if (e1.arc != e2.arc) {
     const Element& l = e1.arc ? e2 : e1;
     const Element& c = e1.arc ? e1 : e2;
+    const double r = c.radius();
     Vec2 d = unit(l.p1 - l.p0);
     Vec2 f = l.p0 - c.c;
-    double b = dot(f, d), cc = dot(f, f) - c.radius() * c.radius();
-    double disc = b * b - cc;
-    if (disc < -1e-12) return out;
+    double b = dot(f, d), cc = dot(f, f) - r * r;
+    double disc = b * b - cc;  // r^2 - (distance of the centre from the line)^2
+    // Missing the circle by no more than tol::kPoint: touching it.
+    if (disc < -2 * r * tol::kPoint) return out;
     double s = std::sqrt(std::fmax(0.0, disc));
     for (double t : {-b - s, -b + s}) {
-      Vec2 p = l.p0 + t * d;
-      double ul = lineParam(l, p), uc = param(c, p);
-      out.push_back(e1.arc ? Crossing{p, uc, ul} : Crossing{p, ul, uc});
+      out.push_back(crossing(l.p0 + t * d));
       if (s == 0) break;
     }
     return out;
@@ -123,17 +154,80 @@ std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
   double r1 = e1.radius(), r2 = e2.radius();
   Vec2 dc = e2.c - e1.c;
   double dist = length(dc);
-  if (dist < 1e-12) return out;  // concentric
+  if (dist < tol::kNumeric) return out;  // concentric
   double a = (r1 * r1 - r2 * r2 + dist * dist) / (2 * dist);
   double h2 = r1 * r1 - a * a;
-  if (h2 < -1e-9 * r1 * r1) return out;
+  // Passing each other by no more than about tol::kPoint: touching.
+  if (h2 < -2 * tol::kPoint * r1 * r2 / (r1 + r2)) return out;
   double h = std::sqrt(std::fmax(0.0, h2));
   Vec2 m = e1.c + (a / dist) * dc;
   Vec2 perp = leftNormal((1.0 / dist) * dc);
   for (double sgn : {1.0, -1.0}) {
-    Vec2 p = m + (sgn * h) * perp;
-    out.push_back({p, param(e1, p), param(e2, p)});
+    out.push_back(crossing(m + (sgn * h) * perp));
     if (h == 0) break;
+  }
+  return out;
+}
+
+// An arc's change of radius from its start to its end (0: a line, or a circle).
+double radiusChange(const Element& e) {
+  if (!e.arc) return 0;
+  const double d = length(e.p1 - e.c) - e.radius();
+  return std::fabs(d) > tol::kNumeric * (1 + e.radius()) ? d : 0;
+}
+
+// The element's circle at the spiral's radius at fraction u (beyond its ends the spiral goes
+// on: a row from a point of an extension to a point of the element is the same spiral).
+Element atFraction(const Element& e, double change, double u) {
+  Element o = e;
+  const double r0 = e.radius();
+  o.p0 = e.c + ((r0 + u * change) / r0) * (e.p0 - e.c);
+  return o;
+}
+}  // namespace
+
+std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
+  const Param q1 = paramOf(e1), q2 = paramOf(e2);
+  const double c1 = radiusChange(e1), c2 = radiusChange(e2);
+  if (c1 == 0 && c2 == 0) return intersectCircles(e1, e2, q1, q2);
+  // A spiral (an arc whose radii differ): the crossings with its circle at the radius it has
+  // there, found from the crossings with the circles of its start and of its end radius (of
+  // each spiral) in a few steps. Where the steps do not converge (the curves meet at a very small
+  // angle, so that a change of radius moves the crossing far along them), the crossing with the
+  // nearer of the two circles is kept: near its end the spiral is that circle.
+  std::vector<Crossing> out;
+  for (int seed = 0; seed < 4; ++seed) {
+    const double s1 = seed & 1, s2 = seed >> 1;  // start (0) or end (1) circle of each
+    if ((c1 == 0 && s1 != 0) || (c2 == 0 && s2 != 0)) continue;
+    const Element a0 = c1 != 0 ? atFraction(e1, c1, s1) : e1;
+    const Element b0 = c2 != 0 ? atFraction(e2, c2, s2) : e2;
+    for (const Crossing& x0 : intersectCircles(a0, b0, q1, q2)) {
+      Crossing x = x0;
+      double moved = 1e300;
+      bool converged = false;
+      for (int step = 0; step < 4 && !converged; ++step) {
+        const Element a = c1 != 0 ? atFraction(e1, c1, x.u1) : e1;
+        const Element b = c2 != 0 ? atFraction(e2, c2, x.u2) : e2;
+        std::optional<Crossing> nearest;
+        for (const Crossing& y : intersectCircles(a, b, q1, q2))
+          if (!nearest || length(y.p - x.p) < length(nearest->p - x.p)) nearest = y;
+        if (!nearest) break;
+        const double d = length(nearest->p - x.p);
+        if (d > 0.5 * moved) break;  // not converging
+        moved = d;
+        x = *nearest;
+        converged = d < tol::kNumeric * (1 + length(x.p));
+      }
+      if (!converged) {
+        // Keep the seed's crossing where it lies on the seed circles' halves of the spirals.
+        if ((c1 != 0 && std::fabs(x0.u1 - s1) > 0.5) || (c2 != 0 && std::fabs(x0.u2 - s2) > 0.5))
+          continue;
+        x = x0;
+      }
+      bool known = false;
+      for (const Crossing& y : out) known = known || length(y.p - x.p) < tol::kPoint;
+      if (!known) out.push_back(x);
+    }
   }
   return out;
 }
@@ -150,7 +244,7 @@ Element fullCircle(Vec2 c, double r) {
 std::optional<Vec2> tangentPoint(Vec2 p, Vec2 c, double r, double s, bool towards) {
   Vec2 v = p - c;
   double d = length(v);
-  if (d <= r + 1e-9) return std::nullopt;
+  if (d <= r + tol::kPoint) return std::nullopt;
   double phi = std::atan2(v.o, v.a), alpha = std::acos(r / d);
   for (double ang : {phi + alpha, phi - alpha}) {
     Vec2 t{c.a + r * std::cos(ang), c.o + r * std::sin(ang)};

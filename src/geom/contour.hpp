@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geom/arc.hpp"
+#include "geom/tolerance.hpp"
 #include "ncoffset/geometry.hpp"
 
 namespace ncoffset::geom {
@@ -48,7 +49,10 @@ inline double angleDeg(Vec2 t1, Vec2 t2) {
 }
 
 // A line (arc == false) or a circular arc from p0 to p1 about c, turning ccw (G3) or cw (G2).
-// `turns` full revolutions are added to the sweep (TURN=).
+// `turns` full revolutions are added to the sweep (TURN=). An arc whose end radius differs from
+// its start radius (within MD21000/MD21010, or a compensation value changing in the block) is
+// the spiral between them: the radius changes linearly with the angle; radius() is the start
+// radius.
 struct Element {
   bool arc = false;
   Vec2 p0, p1, c;
@@ -63,15 +67,21 @@ struct Element {
 };
 
 // The equidistant at signed distance d (d > 0: to the left of the direction of travel). For an
-// arc the radius becomes r - d (ccw) or r + d (cw); a radius <= 0 has no equidistant.
+// arc the radius becomes r - d (ccw) or r + d (cw), at its start and at its end (a spiral keeps
+// its change of radius: both ends lie at |d| from the element's ends); an arc whose radius
+// becomes tol::kPoint or less there (an inside arc with r <= R) has no equidistant.
 std::optional<Element> equidistant(const Element& e, double d);
 
-// Intersections of the two elements taken as whole lines / circles, each with the parameter of
-// the point on either element: for lines the fraction along p0->p1, for arcs the fraction of
-// the sweep from p0 (values outside 0..1 lie on the extensions).
+// Intersections of the two elements taken as whole lines / circles (a spiral: the circle of the
+// radius it has at the crossing), each with the parameter of the point on either element: for lines
+// the fraction along p0->p1, for arcs the fraction of the sweep from p0 (values outside 0..1 lie on
+// the extensions), and the elements' lengths, so that a window on the parameters is a window in mm
+// (tol::onElement and the like). A line passing a circle, or two circles passing each other, within
+// tol::kPoint touch it.
 struct Crossing {
   Vec2 p;
   double u1, u2;
+  double len1 = 0, len2 = 0;  // the elements' lengths (an arc: its radius times its sweep)
 };
 std::vector<Crossing> intersect(const Element& e1, const Element& e2);
 
@@ -101,20 +111,21 @@ Element fullCircle(Vec2 c, double r);
 
 // The tangent point T on the circle about c (radius r) of a line through p that keeps c on its
 // right (s > 0) or its left (s < 0) when travelled p -> T (`towards`) or T -> p. nullopt when p
-// lies inside the circle (or on it, within 1e-9 mm).
+// lies inside the circle (or on it, within tol::kPoint).
 std::optional<Vec2> tangentPoint(Vec2 p, Vec2 c, double r, double s, bool towards);
 
 // The point at fraction u of an element (same parametrisation as Crossing).
 Vec2 pointAt(const Element& e, double u);
 
-// An axis-parallel box around an element (arcs: around their whole circle), for a cheap test
-// before intersecting two elements.
+// An axis-parallel box around an element (arcs: around their whole circle, of the larger of
+// their two radii), for a cheap test before intersecting two elements.
 struct Box {
   double lo_a = 0, lo_o = 0, hi_a = 0, hi_o = 0;
   Box() = default;
   explicit Box(const Element& e) {
     if (e.arc) {
-      const double r = length(e.p0 - e.c);
+      const Vec2 d0 = e.p0 - e.c, d1 = e.p1 - e.c;
+      const double q0 = dot(d0, d0), q1 = dot(d1, d1), r = std::sqrt(q0 > q1 ? q0 : q1);
       lo_a = e.c.a - r, hi_a = e.c.a + r, lo_o = e.c.o - r, hi_o = e.c.o + r;
     } else {
       // Finite coordinates (block_executor): plain comparisons, no fmin/fmax calls.
@@ -123,7 +134,7 @@ struct Box {
     }
   }
   bool overlaps(const Box& b) const {
-    constexpr double kSlack = 1e-6;
+    constexpr double kSlack = tol::kPoint;  // at least the windows of the crossings
     return lo_a <= b.hi_a + kSlack && b.lo_a <= hi_a + kSlack && lo_o <= b.hi_o + kSlack &&
            b.lo_o <= hi_o + kSlack;
   }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geom/tolerance.hpp"
+
 namespace ncoffset::geom {
 
 Vec2 DiscCurve::at(double t) const {
@@ -12,7 +14,7 @@ Vec2 DiscCurve::at(double t) const {
 std::optional<DiscCurve> discCurve(Vec2 a, Vec2 ta, Vec2 b, Vec2 tb, Vec2 p, double disc) {
   // S: the tangent at A (direction ta) meets the tangent at B (direction tb).
   const double den = cross(ta, tb);
-  if (std::fabs(den) < 1e-9) return std::nullopt;
+  if (std::fabs(den) < tol::kTurn) return std::nullopt;  // no turn: no control point
   const double ua = cross(b - a, tb) / den, ub = cross(b - a, ta) / den;
   if (ua <= 0 || ub >= 0) return std::nullopt;
   DiscCurve c{a, a + ua * ta, b};
@@ -20,7 +22,7 @@ std::optional<DiscCurve> discCurve(Vec2 a, Vec2 ta, Vec2 b, Vec2 tb, Vec2 p, dou
   const double h = length(m - p), ps = length(c.s - p);
   const double r = 0.5 * (length(a - p) + length(b - p));
   const double o = r + disc / 100.0 * (ps - r);
-  if (ps - o < 1e-12) {
+  if (ps - o < tol::kNumeric) {
     c.corner = true;  // DISC = 100: the intersection of the equidistants' tangents
     return c;
   }

@@ -40,7 +40,7 @@ void HtmlReport::segment(const Segment& s) {
   svg_.segment(s);
   long long n = counts_[0] + counts_[1] + counts_[2] + counts_[3];
   ++counts_[static_cast<size_t>(s.motion)];
-  (s.motion == Motion::G0 ? rapid_length_ : cut_length_) += segmentLength(s);
+  (s.has_feed ? cut_length_ : rapid_length_) += segmentLength(s);  // rapid: no feed (path.hpp)
   box_.add(s);
   if (n < kMaxRows) {
     auto it = fmt::appender(rows_);
@@ -126,8 +126,8 @@ void HtmlReport::writeSummary(const Alarm* alarm) {
   fmt::format_to(it, "<tr><th>segments</th><td>{} (G0 {}, G1 {}, G2 {}, G3 {})</td></tr>\n", total,
                  counts_[0], counts_[1], counts_[2], counts_[3]);
   fmt::format_to(it,
-                 "<tr><th>path length G0</th><td class=\"n\">{:.3f} mm</td></tr>\n"
-                 "<tr><th>path length G1/G2/G3</th><td class=\"n\">{:.3f} mm</td></tr>\n",
+                 "<tr><th>path length rapid (G0)</th><td class=\"n\">{:.3f} mm</td></tr>\n"
+                 "<tr><th>path length at feed</th><td class=\"n\">{:.3f} mm</td></tr>\n",
                  rapid_length_, cut_length_);
   for (int i = 0; i < 3; ++i) {
     fmt::format_to(it, "<tr><th>{} range</th><td class=\"n\">", "XYZ"[i]);

@@ -74,15 +74,18 @@ void MpfWriter::segment(const Segment& s) {
   for (int i = 1; i < 3; ++i)
     if (std::fabs(s.normal[i]) > std::fabs(s.normal[ax])) ax = i;
   double len = norm(s.normal);
-  if (!(len > 0) || std::fabs(s.normal[ax]) / len < 1 - 1e-9) {
-    // About a tilted axis (a frame rotating the plane, output in MCS): no G2/G3 can say it;
+  const bool tilted = !(len > 0) || std::fabs(s.normal[ax]) / len < 1 - 1e-9;
+  if (tilted || !s.has_feed) {
+    // About a tilted axis (a frame rotating the plane, output in MCS), or at rapid traverse (the
+    // corner circle of a G0 block under radius compensation): no G2/G3 can say it; G1 / G0
     // chords of at most one degree.
     ArcGeometry g = arcGeometry(s);
     int chords = std::max(1, static_cast<int>(std::ceil(std::fabs(g.sweep) / (kPi / 180) - 1e-9)));
-    fmt::format_to(fmt::appender(w_.buf()), "; {} about a tilted axis: {} chords\n",
-                   motionName(s.motion), chords);
+    fmt::format_to(fmt::appender(w_.buf()), "; {} {}: {} chords\n", motionName(s.motion),
+                   tilted ? "about a tilted axis" : "at rapid traverse", chords);
     for (int i = 1; i <= chords; ++i)
-      block(s, Motion::G1, i == chords ? s.end : g.at(static_cast<double>(i) / chords));
+      block(s, s.has_feed ? Motion::G1 : Motion::G0,
+            i == chords ? s.end : g.at(static_cast<double>(i) / chords));
     return;
   }
   Motion m = s.motion;

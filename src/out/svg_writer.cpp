@@ -233,7 +233,8 @@ SvgWriter::~SvgWriter() = default;
 void SvgWriter::segment(const Segment& s) {
   if (finished_) return;
   box_.add(s);
-  path_->draw(s, s.motion == Motion::G0 ? "nco-g0" : "nco-cut");
+  // Rapid traverse: G0, and the corner circle of a G0 block under radius compensation.
+  path_->draw(s, s.has_feed ? "nco-cut" : "nco-g0");
   last_end_ = s.end;
 }
 

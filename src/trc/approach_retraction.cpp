@@ -12,7 +12,7 @@ namespace ncoffset::trc {
 
 using core::MotionBlock;
 using core::TrcStrategy;
-using detail::kEps;
+namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
@@ -29,18 +29,18 @@ RadiusCompensation::Piece RadiusCompensation::approachLine(Piece& first) {
   const Vec2 p1 = first.programmed.p0;
   const Vec2 n1 = first.side * geom::leftNormal(first.programmed.startTangent());
   if (selection_.trc.approach == Approach::Kont &&
-      geom::dot(approach.programmed.p0 - p1, n1) < -kEps) {
+      geom::dot(approach.programmed.p0 - p1, n1) < -tol::kPoint) {
     approach.strategy =
         TrcStrategy::G460;  // the point behind the contour: G461/G462 have no effect (Q7)
     kontApproach(approach, first);
-  } else if (geom::length(approach.compensated.p1 - approach.compensated.p0) > kEps) {
+  } else if (geom::length(approach.compensated.p1 - approach.compensated.p0) > tol::kPoint) {
     // NORM: one straight line to the normal point of the first element (details Q1); if it
     // cuts the first equidistant earlier, the intersection nearest the start of the line
     // replaces that point (G460).
     auto best = geom::nearestCrossing(
         approach.compensated, first.compensated,
         [](const geom::Crossing& x) {
-          return x.u1 > kEps && x.u1 < 1 - kEps && x.u2 > -kEps && x.u2 < 1 + kEps;
+          return tol::insideElement(x.u1, x.len1) && tol::onElement(x.u2, x.len2);
         },
         [](const geom::Crossing& x) { return x.u1; });
     if (best) approach.compensated.p1 = first.compensated.p0 = best->p;
@@ -57,7 +57,7 @@ RadiusCompensation::Piece RadiusCompensation::approachLine(Piece& first) {
 void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
   const Vec2 p0 = approach.programmed.p0;
   const Vec2 p1 = first.programmed.p0;
-  const double r = std::fabs(settings_.radius), s = first.side;
+  const double r = first.r0, s = first.side;  // the value at the contour's start
   std::optional<Vec2> t = geom::tangentPoint(p0, p1, r, s, true);
   if (!t)
     throw AlarmError(
@@ -73,7 +73,10 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
     // The line extended meets the first equidistant extended backwards: nearest the contour
     // start point.
     auto best = geom::nearestCrossing(
-        line, first.compensated, [](const geom::Crossing& x) { return x.u1 > kEps && x.u2 < kEps; },
+        line, first.compensated,
+        [](const geom::Crossing& x) {
+          return tol::afterStart(x.u1, x.len1) && tol::beforeStart(x.u2, x.len2);
+        },
         [&p1](const geom::Crossing& x) { return geom::length(x.p - p1); });
     if (best) {
       approach.compensated.p1 = best->p;
@@ -104,7 +107,8 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   const Vec2 pe = last.programmed.p1;
   const Vec2 ne = last.side * geom::leftNormal(last.programmed.endTangent());
   Element retract = toElement(m);
-  if (m.trc.approach == Approach::Kont && !last.emitted && geom::dot(retract.p1 - pe, ne) < -kEps) {
+  if (m.trc.approach == Approach::Kont && !last.emitted &&
+      geom::dot(retract.p1 - pe, ne) < -tol::kPoint) {
     kontRetraction(m);
     return;
   }
@@ -115,11 +119,12 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   // (the one nearest the end of the equidistant) replaces the normal point (details Q1).
   Piece& fin = window_.back();
   retract.p0 = fin.compensated.p1;
-  if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > kEps) {
+  if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > tol::kPoint) {
     auto best = geom::nearestCrossing(
         fin.compensated, retract,
         [](const geom::Crossing& x) {
-          return x.u1 > -kEps && x.u1 < 1 - kEps && x.u2 > kEps && x.u2 < 1 + kEps;
+          return tol::onElement(x.u1, x.len1) && tol::beforeEnd(x.u1, x.len1) &&
+                 tol::afterStart(x.u2, x.len2) && tol::onElement(x.u2, x.len2);
         },
         [](const geom::Crossing& x) { return -x.u1; });
     if (best) fin.compensated.p1 = best->p;
@@ -152,7 +157,8 @@ void RadiusCompensation::retractionExtension(const MotionBlock& m) {
     auto best = geom::nearestCrossing(
         c.compensated, ext,
         [&ext](const geom::Crossing& x) {
-          return x.u1 > kEps && x.u1 < 1 + kEps && (ext.arc || x.u2 > -kEps);
+          return tol::afterStart(x.u1, x.len1) && tol::onElement(x.u1, x.len1) &&
+                 (ext.arc || x.u2 * x.len2 > -tol::kPoint);
         },
         [](const geom::Crossing& x) { return -x.u1; });
     if (!best) continue;
@@ -189,7 +195,9 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
     // end point.
     auto best = geom::nearestCrossing(
         last.compensated, line,
-        [](const geom::Crossing& x) { return x.u1 > 1 - kEps && x.u2 < 1 - kEps; },
+        [](const geom::Crossing& x) {
+          return tol::pastEnd(x.u1, x.len1) && tol::beforeEnd(x.u2, x.len2);
+        },
         [&pe](const geom::Crossing& x) { return geom::length(x.p - pe); });
     if (best) {
       last.compensated.p1 = best->p;

@@ -10,8 +10,7 @@
 namespace ncoffset::trc {
 
 using core::TrcStrategy;
-using detail::kEps;
-using detail::kZero;
+namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
@@ -30,7 +29,20 @@ void RadiusCompensation::bridge(Piece& next, bool needed) {
   const Element& later = next.r0 == next.r1 ? next.compensated : changed;
   const geom::Box later_box = next.r0 == next.r1 ? next.box : geom::Box(later);
   std::optional<std::pair<size_t, Vec2>> found;
-  for (size_t j = window_.size() - 2; j-- > 0;) {
+  size_t start = window_.size() - 2;
+  if (!window_[start].valid) {
+    // Elements without equidistant just before `next` (an inside arc with r = R): where the
+    // valid element before them ends, `next` may start (tol::kPoint); they meet there.
+    size_t j = start;
+    while (j > 0 && !window_[j].valid) --j;
+    const Piece& c = window_[j];
+    if (c.index >= oldest && !c.emitted && (!c.approach || needed) &&
+        geom::length(c.compensated.p1 - later.p0) < tol::kPoint) {
+      found = {j, c.compensated.p1};
+      start = settings_.collision == CollisionCheck::Cdon ? j : 0;  // CDON searches on
+    }
+  }
+  for (size_t j = start; j-- > 0;) {
     const Piece& c = window_[j];
     if (c.index < oldest || c.emitted) break;
     if (!c.valid || (c.approach && !needed)) continue;
@@ -68,15 +80,15 @@ Element RadiusCompensation::approachExtension(const Piece& c, double r) {
 std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(
     const Piece& c, const Element& target, bool extension, const Element& later, double side) {
   auto accept = [&](const geom::Crossing& x) {
-    const bool on_target =
-        extension ? (!target.arc ? x.u1 > -kEps : true) : x.u1 > kEps && x.u1 < 1 - kEps;
-    if (!on_target || x.u2 < -kEps || x.u2 > 1 - kEps) return false;
+    const bool on_target = extension ? (!target.arc ? x.u1 * x.len1 > -tol::kPoint : true)
+                                     : tol::insideElement(x.u1, x.len1);
+    if (!on_target || !tol::onElement(x.u2, x.len2) || !tol::beforeEnd(x.u2, x.len2)) return false;
     // Like an inside corner: the later element turns towards the compensation side.
     // (With an extension the approach becomes the straight line to the point.)
     const Vec2 t1 = extension    ? geom::unit(x.p - c.compensated.p0)
                     : target.arc ? geom::tangentAt(target, x.p)
                                  : geom::unit(target.p1 - target.p0);
-    return !(side * geom::cross(t1, geom::tangentAt(later, x.p)) < detail::kTurnEps);
+    return !(side * geom::cross(t1, geom::tangentAt(later, x.p)) < tol::kTurn);
   };
   // Nearest the start of the later element.
   return geom::nearestCrossing(target, later, accept, [](const geom::Crossing& x) { return x.u2; });
@@ -91,7 +103,7 @@ void RadiusCompensation::omitAfter(size_t keep, Vec2 at, bool keep_last) {
                  "path component of the block in the compensation plane becomes zero: block "
                  "omitted by bottleneck detection of tool radius compensation");
     // Everything but the plane motion runs at the intersection, in program order (Q5).
-    if (std::fabs(p.block.end[pa.applicate] - p.block.start[pa.applicate]) > kZero)
+    if (std::fabs(p.block.end[pa.applicate] - p.block.start[pa.applicate]) > tol::kPoint)
       window_[keep].waiting.push_back(atPoint(p.block, at));
     for (auto& w : p.waiting) window_[keep].waiting.push_back(std::move(w));
   }

@@ -2,8 +2,8 @@
 // corners.cpp, bottleneck.cpp, approach_retraction.cpp and the inline parts of
 // radius_compensation.hpp): the tolerances and the alarms raised in more than one of them.
 //
-// The tolerances are gathered here with the values they had as literals; one name per role, so
-// that changing one (another issue will) does not change the others by accident.
+// The tolerances are those of the compensation geometry, geom/tolerance.hpp (one policy for
+// geom/ and trc/, docs/radius-compensation.md "Tolerances").
 #pragma once
 
 #include <fmt/format.h>
@@ -11,21 +11,13 @@
 #include <limits>
 #include <string>
 
+#include "geom/tolerance.hpp"
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::trc::detail {
 
-// Lengths (mm) and element parameters (fractions of an element): "on the element", "the same
-// point", "behind the contour".
-inline constexpr double kEps = 1e-9;
-// The turn condition of bottleneck detection: the cross product of the two unit tangents at a
-// crossing (W1 2.4.8, details Q5).
-inline constexpr double kTurnEps = 1e-9;
-// "No value / no motion": a compensation value, a plane or applicate motion, a change of the
-// value, the cross product of two antiparallel tangents (a reversal).
-inline constexpr double kZero = 1e-12;
-// How far the straight chords of a DISC transition curve may deviate from the curve (mm).
-inline constexpr double kDiscTolerance = 1e-3;
+namespace tol = geom::tol;
+
 // The index of a block that never comes (for checkOpen when the window is flushed).
 inline constexpr long kNoLaterBlock = std::numeric_limits<long>::max() / 2;
 

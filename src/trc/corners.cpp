@@ -12,8 +12,7 @@
 namespace ncoffset::trc {
 
 using core::MotionBlock;
-using detail::kEps;
-using detail::kZero;
+namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
@@ -38,14 +37,14 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
     restartLine(next, a);
     return;
   }
-  if (geom::length(a - b) < kEps) {  // tangent transition: nothing inserted
+  if (geom::length(a - b) < tol::kPoint) {  // tangent transition: nothing inserted
     next.compensated.p0 = a;
     return;
   }
   const Vec2 t1 = cur.programmed.endTangent(), t2 = next.programmed.startTangent();
   const double c = geom::cross(t1, t2), d = geom::dot(t1, t2);
   const double s = next.side;
-  const bool reversal = std::fabs(c) < kZero && d < 0;
+  const bool reversal = std::fabs(c) < tol::kParallel && d < 0;
   const bool inside = !reversal && s * c > 0;
   const Corner k{a,
                  b,
@@ -66,7 +65,9 @@ void RadiusCompensation::restartLine(Piece& next, Vec2 from) const {
   // A new side: no corner; a straight line from the old normal point to the new one, part of
   // the new block.
   const Vec2 b = next.compensated.p0;
-  if (geom::length(from - b) > kEps) {
+  if (geom::length(from - b) < tol::kPoint) {
+    next.compensated.p0 = from;
+  } else {
     Element line;
     line.p0 = from;
     line.p1 = b;
@@ -83,14 +84,19 @@ void RadiusCompensation::insideCorner(Piece& cur, Piece& next, const Corner& k) 
   auto best = geom::nearestCrossing(
       k.e1, k.e2,
       [](const geom::Crossing& x) {
-        return x.u1 > -kEps && x.u1 < 1 + kEps && x.u2 > -kEps && x.u2 < 1 + kEps;
+        return tol::onElement(x.u1, x.len1) && tol::onElement(x.u2, x.len2);
       },
       [](const geom::Crossing& x) { return x.u2; });
-  if (!best) {
+  if (best) {
+    cur.compensated.p1 = next.compensated.p0 = best->p;
+  } else if (geom::length(k.a - k.b) < tol::kInsert) {
+    // Tangent within half an increment, where the crossing of two nearly parallel curves is
+    // lost in its own error (a spiral's radius moves it far along them): joined at the first
+    // one's end; the second starts at most (half an increment)^2 / 2R nearer than R.
+    next.compensated.p0 = k.a;
+  } else {
     next.open_before = true;
-    return;
   }
-  cur.compensated.p1 = next.compensated.p0 = best->p;
 }
 
 void RadiusCompensation::outsideCorner(Piece& cur, Piece& next, const Corner& k) const {
@@ -101,7 +107,7 @@ void RadiusCompensation::outsideCorner(Piece& cur, Piece& next, const Corner& k)
     auto best = geom::nearestCrossing(
         k.e1, k.e2,
         [](const geom::Crossing& x) {
-          return x.u1 > kEps && x.u1 < 1 - kEps && x.u2 > kEps && x.u2 < 1 - kEps;
+          return tol::insideElement(x.u1, x.len1) && tol::insideElement(x.u2, x.len2);
         },
         [](const geom::Crossing& x) { return x.u2; });
     if (best) {
@@ -115,13 +121,22 @@ void RadiusCompensation::outsideCorner(Piece& cur, Piece& next, const Corner& k)
   const core::TrcSettings& t = next.block.trc;
   bool circle = t.corner == CornerMode::TransitionCircle ? !(angle < t.curve_insert_limit)
                                                          : angle >= t.corner_limit;
-  if (!circle) {
+  // A circle shorter than half an increment is no motion on the control: intersect instead.
+  const bool microscopic = geom::length(k.a - k.b) < tol::kInsert;
+  if (!circle || microscopic) {
     // The intersection of the extended equidistants nearest the corner point.
     auto best = geom::nearestCrossing(
-        k.e1, k.e2, [](const geom::Crossing& x) { return x.u1 > 1 - kEps && x.u2 < kEps; },
+        k.e1, k.e2,
+        [](const geom::Crossing& x) {
+          return tol::pastEnd(x.u1, x.len1) && tol::beforeStart(x.u2, x.len2);
+        },
         [&k](const geom::Crossing& x) { return geom::length(x.p - k.p); });
     if (best) {
       cur.compensated.p1 = next.compensated.p0 = best->p;
+      return;
+    }
+    if (microscopic) {  // the two equidistants end within half an increment: joined there
+      next.compensated.p0 = k.a;
       return;
     }
   }
@@ -139,9 +154,9 @@ void RadiusCompensation::transition(std::vector<MotionBlock>& out, const MotionB
   PlaneAxes pa = planeAxes(like.plane);
   if (disc > 0) {
     if (auto curve = geom::discCurve(a, ta, b, tb, p, disc)) {
-      // DISC: the curve as straight chords within kDiscTolerance (the applicate, if it moves,
-      // is spread over them).
-      const std::vector<Vec2> pts = geom::chords(*curve, detail::kDiscTolerance);
+      // DISC: the curve as straight chords within tol::kChord (the applicate, if it moves, is
+      // spread over them).
+      const std::vector<Vec2> pts = geom::chords(*curve, tol::kChord);
       Vec2 from = a;
       for (size_t i = 0; i < pts.size(); ++i) {
         Element chord;

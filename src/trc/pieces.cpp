@@ -3,6 +3,7 @@
 // a compensated element back as a block of the channel.
 #include <cmath>
 
+#include "core/inline_step.hpp"
 #include "trc/compensation_internal.hpp"
 #include "trc/radius_compensation.hpp"
 
@@ -10,8 +11,7 @@ namespace ncoffset::trc {
 
 using core::MotionBlock;
 using core::TrcStrategy;
-using detail::kEps;
-using detail::kZero;
+namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
@@ -26,10 +26,20 @@ Element RadiusCompensation::toElement(const MotionBlock& m) const {
     e.ccw = m.motion == Motion::G3;
     e.turns = m.turns;
   }
+  if (!metric_.identity) toMetric(e);
   return e;
 }
 
-core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Element& e) const {
+void RadiusCompensation::toMetric(Element& e) const {
+  // A scaling frame: the machine's lengths (plane_metric.hpp).
+  e.p0 = metric_.to(e.p0);
+  e.p1 = metric_.to(e.p1);
+  e.c = metric_.to(e.c);
+}
+
+namespace {
+// The geometry of plane element `e` (program coordinates) as a motion of block `like`.
+NCOFFSET_INLINE_STEP core::Geometry planeGeometry(const MotionBlock& like, const Element& e) {
   PlaneAxes pa = planeAxes(like.plane);
   core::Geometry g{like.motion, like.start, like.end, like.centre, like.applicate, like.turns};
   g.start[pa.abscissa] = e.p0.a;
@@ -47,6 +57,18 @@ core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Eleme
     g.motion = Motion::G1;
   }
   return g;
+}
+
+}  // namespace
+
+core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Element& e) const {
+  if (metric_.identity) return planeGeometry(like, e);
+  // From the machine's lengths back to the program's coordinates (plane_metric.hpp).
+  Element back = e;
+  back.p0 = metric_.from(e.p0);
+  back.p1 = metric_.from(e.p1);
+  back.c = metric_.from(e.c);
+  return planeGeometry(like, back);
 }
 
 MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
@@ -97,7 +119,7 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
     const double r = e.radius();
     const double k = e.ccw ? -s : s;  // the left side of a ccw arc is its inside
     const double ra = r + k * r0, rb = geom::length(e.p1 - e.c) + k * r1;
-    if (ra <= kEps || rb <= kEps)
+    if (ra <= tol::kPoint || rb <= tol::kPoint)
       raise(AlarmNumber::TrcCurvatureTooSmall,
             "curvature radius with variable compensation value too small");
     p.compensated = e;
@@ -131,7 +153,7 @@ void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
     p.restart = true;
     return;
   }
-  compensateInto(p, m, old_r, std::fabs(old_r - new_r) < kZero ? old_r : new_r);
+  compensateInto(p, m, old_r, std::fabs(old_r - new_r) <= tol::kPoint ? old_r : new_r);
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) {

@@ -13,7 +13,6 @@ namespace ncoffset::trc {
 
 using core::MotionBlock;
 using core::TrcMode;
-using detail::kZero;
 using geom::Element;
 
 void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
@@ -22,6 +21,21 @@ void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
           "change of compensation plane not possible while tool radius compensation is active");
   if (!m.frame.sameAs(selection_.frame))
     detail::notModelled("a frame change while compensation is active");
+}
+
+geom::PlaneMetric RadiusCompensation::planeMetric(const MotionBlock& m) {
+  // The tool radius is physical: not scaled by SCALE or a scaling settable frame (Mitsubishi
+  // M700V PM 13.20, GSK980MDc p58 say so; the Siemens frame components hold no tool data;
+  // docs/radius-compensation.md "Frames").
+  if (m.frame.isIdentity()) return {};
+  const PlaneAxes pa = planeAxes(m.plane);
+  Vec3 ea, eo;
+  ea[pa.abscissa] = 1;
+  eo[pa.ordinate] = 1;
+  const Vec3 a = m.frame.linear() * ea, o = m.frame.linear() * eo;
+  // (A programmed circle under different factors is an ellipse: the interpreter stops it with
+  // 99012 before it gets here.)
+  return geom::PlaneMetric::fromGram(dot(a, a), dot(a, o), dot(o, o));
 }
 
 void RadiusCompensation::blockWithoutMotion() {
@@ -38,7 +52,7 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
   switch (state_) {
     case State::Off: {
       // (Here, not in startSelection: the path of every block without compensation.)
-      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > kZero;
+      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > geom::tol::kPoint;
       if (!wants || !planeMotion(m))
         emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
       else
@@ -63,6 +77,7 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   settings_ = m.trc;
   selection_ = m;
+  metric_ = planeMetric(m);
   state_ = State::Selecting;
   dummy_blocks_ = 0;
 }
@@ -84,10 +99,13 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
     return;
   }
   if (sideOf(m.trc) != side()) settings_ = m.trc;  // the side of the first element counts
-  const double r = std::fabs(settings_.radius);
-  Piece first = compensate(m, r, r);
+  // The first element starts at the value of the selection block; a new value programmed in it
+  // (D, T) is spread over it like in any later block (details Q8).
+  const double r0 = std::fabs(selection_.trc.radius), r1 = std::fabs(m.trc.radius);
+  Piece first = compensate(m, r0, std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1);
   if (!first.valid) detail::collision(m.line, settings_.check_blocks);  // no element to approach
   Piece approach = approachLine(first);
+  settings_ = m.trc;  // the next block starts from this one's value
   approach.waiting = std::move(waiting_);
   waiting_.clear();
   window_.clear();

@@ -22,6 +22,7 @@
 
 #include "core/stage.hpp"
 #include "geom/contour.hpp"
+#include "geom/plane_metric.hpp"
 #include "trc/compensation_internal.hpp"
 #include "trc/piece_window.hpp"
 
@@ -77,6 +78,8 @@ class RadiusCompensation final : public core::Stage {
   // --- The stage driver (radius_compensation.cpp): selection, dispatch, release, flush.
   // A G41/G42 block with plane motion: waits for the first element (W1 2-41).
   void startSelection(const core::MotionBlock& m);
+  // The plane's lengths under the block's frame.
+  static geom::PlaneMetric planeMetric(const core::MotionBlock& m);
   void motionSelecting(const core::MotionBlock& m);
   void motionOn(const core::MotionBlock& m);
   void checkSameSettings(const core::MotionBlock& m) const;
@@ -90,11 +93,13 @@ class RadiusCompensation final : public core::Stage {
     const PlaneAxes pa = planeAxes(m.plane);
     const geom::Vec2 d{m.end[pa.abscissa] - m.start[pa.abscissa],
                        m.end[pa.ordinate] - m.start[pa.ordinate]};
-    return geom::length(d) > detail::kZero;
+    return geom::length(d) > geom::tol::kPoint;  // a shorter motion is none
   }
 
   // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.
   geom::Element toElement(const core::MotionBlock& m) const;
+  // Program coordinates to the machine's lengths (a scaling frame; not inlined: rare).
+  [[gnu::noinline]] void toMetric(geom::Element& e) const;
   core::MotionBlock toBlock(const core::MotionBlock& like, const geom::Element& e) const;
   // The geometry of element `e` as a motion of block `like` (lines stay G0/G1).
   core::Geometry geometry(const core::MotionBlock& like, const geom::Element& e) const;
@@ -175,6 +180,9 @@ class RadiusCompensation final : public core::Stage {
   bool restart_next_ = false;  // after STOPRE: the next element starts anew
   int dummy_blocks_ = 0;
   core::TrcSettings settings_;  // of the last block
+  // The plane's lengths under the selection block's frame (SCALE): the window's elements are in
+  // these coordinates, so that R is kept in the machine (toElement / geometry convert).
+  geom::PlaneMetric metric_;
 };
 
 }  // namespace ncoffset::trc

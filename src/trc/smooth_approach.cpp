@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "geom/tolerance.hpp"
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::trc {
@@ -20,7 +21,8 @@ using geom::Vec2;
 
 namespace {
 
-constexpr double kEps = 1e-9;
+namespace tol = geom::tol;  // the tolerances of radius compensation (geom/tolerance.hpp)
+constexpr double kEps = tol::kPoint;
 
 Vec2 inPlane(const MotionBlock& m, const Vec3& v) {
   PlaneAxes pa = planeAxes(m.plane);
@@ -32,7 +34,7 @@ bool isArc(const MotionBlock& m) {
 }
 
 bool hasPlaneMotion(const MotionBlock& m) {
-  return isArc(m) || geom::length(inPlane(m, m.end) - inPlane(m, m.start)) > 1e-12;
+  return isArc(m) || geom::length(inPlane(m, m.end) - inPlane(m, m.start)) > tol::kPoint;
 }
 
 // The unit tangent of a block in its plane at its start or end.
@@ -45,7 +47,7 @@ Vec2 tangent(const MotionBlock& m, bool at_end) {
 
 // +1: compensation left of the travel, -1: right, 0: off (spec §5.1, a negative value flips).
 double trcSide(const TrcSettings& t) {
-  if (t.mode == TrcMode::Off || std::fabs(t.radius) < 1e-12) return 0;
+  if (t.mode == TrcMode::Off || std::fabs(t.radius) <= tol::kPoint) return 0;
   double s = t.mode == TrcMode::Left ? 1.0 : -1.0;
   return t.radius < 0 ? -s : s;
 }
@@ -174,9 +176,10 @@ MotionBlock curveBlock(const MotionBlock& like, const Vec3& from, const Vec3& to
 }  // namespace
 
 void SmoothApproach::pass(const MotionBlock& m) {
+  // hasPlaneMotion(m) without its square root (asked for every block).
   PlaneAxes pa = planeAxes(m.plane);
-  if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > 1e-12 ||
-      std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > 1e-12)
+  if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > tol::kPoint ||
+      std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > tol::kPoint)
     last_ = LastContour{m.plane, m.motion, m.start, m.end, m.centre};
   last_trc_mode_ = m.trc.mode;
   last_trc_radius_ = m.trc.radius;
@@ -298,7 +301,7 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
   const Motion fast = q.rapid_before ? Motion::G0 : Motion::G1;
   const auto sub = subBlock;
   auto emit = [&](const MotionBlock& b) {
-    if (norm(b.end - b.start) > 1e-12) pass(b);
+    if (norm(b.end - b.start) > tol::kPoint) pass(b);
   };
   emit(sub(s, p0, p1, fast, q.feed_before));
   if (q.infeed == SarInfeed::G340) {
@@ -369,7 +372,7 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   const Motion own = s.motion == Motion::G0 ? Motion::G0 : Motion::G1;
   std::vector<MotionBlock> subs;
   auto keep = [&](const MotionBlock& b) {  // sub-blocks without length give no row
-    if (norm(b.end - b.start) > 1e-12) subs.push_back(b);
+    if (norm(b.end - b.start) > tol::kPoint) subs.push_back(b);
   };
   auto sub = [&](const Vec3& from, const Vec3& to, Motion mo, double feed) {
     keep(subBlock(s, from, to, mo, feed));

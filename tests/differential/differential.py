@@ -4,21 +4,23 @@
 Random closed contours of lines and arcs, in G17 and in G18, are written twice: as a LinuxCNC
 .ngc and as a SINUMERIK .MPF. Both interpreters run; rs274's canonical trace and ncoffset's CSV
 (`--coords wcs`) are parsed into the same segment list (end point, and for arcs centre and
-sense) and compared segment by segment to 1e-4 mm (rs274 prints 4 decimals).
+sense).
 
-Mode 1 (default): no cutter compensation (G40). The programmed paths must agree exactly: an
-independent check of ncoffset's circle handling (I/J/K centres, G2/G3 sense, arcs beyond 180
-degrees) in G17 and G18.
-Mode 2 (--compensated): the same contours machined from outside with G41/G42, G450 and a tool
-radius, three laps; one full steady lap of the tool-centre path (all its corners, away from the
-approach and the retract) is compared. While ncoffset answers alarm 99010 for G41/G42 the run
-reports "ncoffset cannot compensate yet" and exits 77 (skip), never passes.
+Mode 1 (default): no cutter compensation (G40), contours of this script's own generator (arcs
+beyond 180 degrees, centres on a Gaussian-integer lattice). The programmed paths must agree
+segment by segment to 1e-4 mm (rs274 prints 4 decimals): an independent check of ncoffset's
+circle handling (I/J/K centres, G2/G3 sense, arcs beyond 180 degrees) in G17 and G18.
+Mode 2 (--compensated): the contours of the radius-compensation property test
+(tests/support/random_contour.hpp, through ncoffset_random_contours --differential: tangent and
+non-tangent joins, G41/G42, R 0.5..5 mm, coordinates with --decimals decimals), three laps with
+G450 and MD20230 = 0; one full steady lap of each tool-centre path must lie within 1e-3 mm of the
+other (sampled, both ways), away from the approach and the retract. Left out, as documented:
+contours with an outside corner whose equidistants cross inside both elements.
 
 rs274 is a test-time oracle only (installed by setup_rs274.sh into a cache directory); nothing
 of LinuxCNC is linked with or shipped in ncoffset.
 
-Exit status: 0 all agree; 1 a disagreement or an error; 77 skipped (rs274 cannot be had here,
-or mode 2 while ncoffset cannot compensate).
+Exit status: 0 all agree; 1 a disagreement or an error; 77 skipped (rs274 cannot be had here).
 """
 
 from __future__ import annotations
@@ -40,8 +42,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOL = 1e-4          # mm: rs274 prints 4 decimals
 EPS = 1e-9          # float noise on top of TOL
 TICKS = 10000       # all generated coordinates are integers in units of 1e-4 mm (exact decimals)
-TOOL_RADIUS_TICKS = 2 * TICKS   # mode 2: tool radius 2 mm
-LAPS_COMPENSATED = 3
 
 
 # --------------------------------------------------------------------------------------------
@@ -391,7 +391,7 @@ def num(t: int) -> str:
 AXES = {'G17': ('X', 'Y', 'Z', 'I', 'J'), 'G18': ('Z', 'X', 'Y', 'K', 'I')}
 
 
-def blocks(c: Contour, compensated: bool, dialect: str):
+def blocks(c: Contour, dialect: str):
     """The program as a list of (text, role) lines, role = None or ('el', lap, k)."""
     A, O, APP, CA, CO = AXES[c.plane]
     a0, o0 = c.approach_from
@@ -402,31 +402,21 @@ def blocks(c: Contour, compensated: bool, dialect: str):
     else:
         out.append((f"; ncoffset differential contour {c.index} {c.plane}", None))
         out.append((f"G71 G90 G94 G40 {c.plane}", None))
-        if compensated:
-            out.append((f"$TC_DP1[1,1]=120 $TC_DP6[1,1]={num(TOOL_RADIUS_TICKS)}", None))
-            out.append(("T1 D1", None))
-            out.append(("G450", None))
     out.append((f"G0 {A}{num(a0)} {O}{num(o0)} {APP}5", None))
     out.append((f"G1 {APP}{num(c.level)} F{c.feed}", None))
-    comp = ''
-    if compensated:
-        side = 'G42' if c.ccw else 'G41'          # right of a CCW contour = outside
-        comp = (f"{side}.1 D{num(2 * TOOL_RADIUS_TICKS)} " if dialect == 'ngc' else f"{side} ")
-    out.append((f"{comp}G1 {A}{num(c.start[0])} {O}{num(c.start[1])}", None))
-    laps = LAPS_COMPENSATED if compensated else 1
-    for lap in range(laps):
-        prev = c.start
-        for k, el in enumerate(c.elements):
-            f = f" F{el.feed}" if el.feed else ''
-            if el.kind == 'line':
-                text = f"G1 {A}{num(el.end[0])} {O}{num(el.end[1])}{f}"
-            else:
-                g = 'G3' if el.ccw else 'G2'
-                text = (f"{g} {A}{num(el.end[0])} {O}{num(el.end[1])} "
-                        f"{CA}{num(el.centre[0] - prev[0])} {CO}{num(el.centre[1] - prev[1])}{f}")
-            out.append((text, ('el', lap, k)))
-            prev = el.end
-    out.append((f"{'G40 ' if compensated else ''}G1 {A}{num(a0)} {O}{num(o0)}", None))
+    out.append((f"G1 {A}{num(c.start[0])} {O}{num(c.start[1])}", None))
+    prev = c.start
+    for k, el in enumerate(c.elements):
+        f = f" F{el.feed}" if el.feed else ''
+        if el.kind == 'line':
+            text = f"G1 {A}{num(el.end[0])} {O}{num(el.end[1])}{f}"
+        else:
+            g = 'G3' if el.ccw else 'G2'
+            text = (f"{g} {A}{num(el.end[0])} {O}{num(el.end[1])} "
+                    f"{CA}{num(el.centre[0] - prev[0])} {CO}{num(el.centre[1] - prev[1])}{f}")
+        out.append((text, ('el', 0, k)))
+        prev = el.end
+    out.append((f"G1 {A}{num(a0)} {O}{num(o0)}", None))
     out.append((f"G0 {APP}5", None))
     out.append(("M2" if dialect == 'ngc' else "M30", None))
     return out
@@ -543,6 +533,307 @@ def steady_lap(segs: list[Segment], marker: tuple) -> list[Segment] | None:
     return segs[hits[0] + 1:hits[1] + 1]
 
 
+
+# --------------------------------------------------------------------------------------------
+# Mode 2: the contours of tests/support/random_contour.hpp (the property test's generator)
+# --------------------------------------------------------------------------------------------
+
+COMP_TOL = 1e-3     # mm: the compensated paths agree within this (rs274 prints 4 decimals)
+LAPS = 3
+
+
+@dataclass
+class SharedContour:
+    index: int
+    plane: str                       # 'G17' or 'G18'
+    side: str                        # 'G41' or 'G42'
+    radius: float
+    decimals: int
+    start: tuple
+    approach: tuple
+    elements: list = field(default_factory=list)   # (kind, end, centre, ccw), plane coordinates
+
+
+def shared_contours(generator: str, seed: int, count: int, decimals: int) -> list:
+    """The contours of ncoffset_random_contours --differential (random_contour.hpp), parsed."""
+    p = subprocess.run([generator, '--differential', str(seed), '0', str(count), str(decimals)],
+                       capture_output=True, text=True, check=True, timeout=120)
+    out, cur = [], None
+    for line in p.stdout.splitlines():
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == 'contour':
+            cur = SharedContour(int(w[1]), w[2], w[3], float(w[4]), int(w[5]), (0, 0), (0, 0))
+        elif w[0] == 'start':
+            cur.start = (w[1], w[2])
+        elif w[0] == 'approach':
+            cur.approach = (w[1], w[2])
+        elif w[0] == 'line':
+            cur.elements.append(('line', (w[1], w[2]), None, False))
+        elif w[0] == 'arc':
+            cur.elements.append(('arc', (w[1], w[2]), (w[3], w[4]), w[5] == 'ccw'))
+        elif w[0] == 'end':
+            out.append(cur)
+    return out
+
+
+def shared_blocks(c: SharedContour, dialect: str):
+    """The program as (text, role) lines: the contour three times with G41/G42 (LinuxCNC:
+    G41.1/G42.1 D<diameter>), approach from and retraction to c.approach, G450 and MD20230 = 0
+    (an arc at every convex corner, as LinuxCNC)."""
+    A, O, APP, CA, CO = AXES[c.plane]
+    out = []
+    if dialect == 'ngc':
+        out.append((f"(ncoffset differential contour {c.index} {c.plane})", None))
+        out.append((f"G21 G90 G94 G40 G49 {c.plane}", None))
+    else:
+        out.append((f"; ncoffset differential contour {c.index} {c.plane}", None))
+        out.append((f"G71 G90 G94 G40 {c.plane}", None))
+        out.append((f"$TC_DP1[1,1]=120 $TC_DP6[1,1]={c.radius:.3f}", None))
+        out.append(("$MC_CUTCOM_CURVE_INSERT_LIMIT=0", None))
+        out.append(("T1 D1", None))
+        out.append(("G450 CDOF", None))
+    out.append((f"G0 {A}{c.approach[0]} {O}{c.approach[1]} {APP}0", None))
+    comp = f"{c.side}.1 D{2 * c.radius:.3f} " if dialect == 'ngc' else f"{c.side} "
+    out.append((f"{comp}G1 {A}{c.start[0]} {O}{c.start[1]} F500", None))
+    for lap in range(LAPS):
+        prev = tuple(float(v) for v in c.start)
+        for k, (kind, end, centre, ccw) in enumerate(c.elements):
+            if kind == 'line':
+                text = f"G1 {A}{end[0]} {O}{end[1]}"
+            else:
+                # Incremental centre words with the contour's own number of decimals.
+                ia = f"{float(centre[0]) - prev[0]:.{c.decimals}f}"
+                io = f"{float(centre[1]) - prev[1]:.{c.decimals}f}"
+                text = f"{'G3' if ccw else 'G2'} {A}{end[0]} {O}{end[1]} {CA}{ia} {CO}{io}"
+            out.append((text, ('el', lap, k)))
+            prev = (float(end[0]), float(end[1]))
+    out.append((f"G40 G1 {A}{c.approach[0]} {O}{c.approach[1]}", None))
+    out.append(("M2" if dialect == 'ngc' else "M30", None))
+    return out
+
+
+def _plane(p: tuple, plane: str) -> tuple:
+    """(x, y, z) -> plane coordinates (a, o): G17 (X, Y), G18 (Z, X)."""
+    return (p[2], p[0]) if plane == 'G18' else (p[0], p[1])
+
+
+def _pieces(segs: list, plane: str) -> list:
+    """Segments -> plane pieces (start, end, centre or None, ccw)."""
+    out = []
+    for i in range(1, len(segs)):
+        a, b = segs[i - 1], segs[i]
+        s, e = _plane(a.end, plane), _plane(b.end, plane)
+        if b.kind == 'ARC':
+            out.append((s, e, _plane(b.centre, plane), b.ccw))
+        elif math.dist(s, e) > 0:
+            out.append((s, e, None, False))
+    return out
+
+
+def _sweep(c, s, e, ccw):
+    a0, a1 = math.atan2(s[1] - c[1], s[0] - c[0]), math.atan2(e[1] - c[1], e[0] - c[0])
+    d = (a1 - a0) if ccw else (a0 - a1)
+    d %= 2 * math.pi
+    return d if d > 1e-12 else 2 * math.pi
+
+
+def _sample(piece, n=12):
+    s, e, c, ccw = piece
+    if c is None:
+        return [(s[0] + (e[0] - s[0]) * j / n, s[1] + (e[1] - s[1]) * j / n) for j in range(n + 1)]
+    r0, r1 = math.dist(s, c), math.dist(e, c)
+    a0, sw = math.atan2(s[1] - c[1], s[0] - c[0]), _sweep(c, s, e, ccw)
+    pts = []
+    for j in range(n + 1):
+        a = a0 + (1 if ccw else -1) * sw * j / n
+        r = r0 + (r1 - r0) * j / n
+        pts.append((c[0] + r * math.cos(a), c[1] + r * math.sin(a)))
+    return pts
+
+
+def _distance(q, piece) -> float:
+    s, e, c, ccw = piece
+    if c is None:
+        dx, dy = e[0] - s[0], e[1] - s[1]
+        t = max(0.0, min(1.0, ((q[0] - s[0]) * dx + (q[1] - s[1]) * dy) / (dx * dx + dy * dy)))
+        return math.hypot(q[0] - s[0] - t * dx, q[1] - s[1] - t * dy)
+    sw = _sweep(c, s, e, ccw)
+    aq = math.atan2(q[1] - c[1], q[0] - c[0])
+    d = ((aq - math.atan2(s[1] - c[1], s[0] - c[0])) if ccw
+         else (math.atan2(s[1] - c[1], s[0] - c[0]) - aq)) % (2 * math.pi)
+    if d <= sw:
+        r = math.dist(s, c) + (math.dist(e, c) - math.dist(s, c)) * d / sw
+        return abs(math.dist(q, c) - r)
+    return min(math.dist(q, s), math.dist(q, e))
+
+
+def path_distance(a: list, b: list) -> tuple:
+    """The largest distance of a sampled point of path a from path b, and the point."""
+    worst, at = 0.0, None
+    for piece in a:
+        for q in _sample(piece):
+            d = min(_distance(q, other) for other in b)
+            if d > worst:
+                worst, at = d, q
+    return worst, at
+
+
+def curved_outside_crossing(c: SharedContour) -> bool:
+    """A documented exception: an outside corner (for the tool) at which the two equidistants
+    still cross inside both elements (an arc bending back over its neighbour): ncoffset trims the
+    corner there, LinuxCNC goes round it on its arc."""
+    n = len(c.elements)
+    side = 1 if c.side == 'G41' else -1
+    pts = [tuple(float(v) for v in c.start)] + [tuple(float(v) for v in el[1]) for el in c.elements]
+
+    def el(k):
+        kind, end, centre, ccw = c.elements[k]
+        return (pts[k], pts[k + 1], None if kind == 'line' else tuple(float(v) for v in centre), ccw)
+
+    def tangent(piece, at_end):
+        s, e, cc, ccw = piece
+        if cc is None:
+            d = math.dist(s, e)
+            return ((e[0] - s[0]) / d, (e[1] - s[1]) / d)
+        q = e if at_end else s
+        r = math.dist(q, cc)
+        rx, ry = (q[0] - cc[0]) / r, (q[1] - cc[1]) / r
+        return (-ry, rx) if ccw else (ry, -rx)
+
+    def offset(piece):
+        s, e, cc, ccw = piece
+        if cc is None:
+            t = tangent(piece, False)
+            nx, ny = -side * t[1] * c.radius, side * t[0] * c.radius
+            return ((s[0] + nx, s[1] + ny), (e[0] + nx, e[1] + ny), None, False)
+        k = -1 if (ccw == (side > 0)) else 1       # the left side of a ccw arc is its inside
+        r0, r1 = math.dist(s, cc) + k * c.radius, math.dist(e, cc) + k * c.radius
+        if r0 <= 0 or r1 <= 0:
+            return None
+        f0, f1 = r0 / math.dist(s, cc), r1 / math.dist(e, cc)
+        return ((cc[0] + f0 * (s[0] - cc[0]), cc[1] + f0 * (s[1] - cc[1])),
+                (cc[0] + f1 * (e[0] - cc[0]), cc[1] + f1 * (e[1] - cc[1])), cc, ccw)
+
+    def crossings(p, q):
+        if p[2] is None and q[2] is None:
+            return []
+        if p[2] is None or q[2] is None:
+            l, ci = (p, q) if p[2] is None else (q, p)
+            (x0, y0), (x1, y1), cc, r = l[0], l[1], ci[2], math.dist(ci[0], ci[2])
+            dx, dy = x1 - x0, y1 - y0
+            fx, fy = x0 - cc[0], y0 - cc[1]
+            A, B, C = dx * dx + dy * dy, 2 * (fx * dx + fy * dy), fx * fx + fy * fy - r * r
+            disc = B * B - 4 * A * C
+            if disc < 0:
+                return []
+            return [(x0 + t * dx, y0 + t * dy) for t in ((-B - math.sqrt(disc)) / (2 * A),
+                                                        (-B + math.sqrt(disc)) / (2 * A))]
+        c1, r1, c2, r2 = p[2], math.dist(p[0], p[2]), q[2], math.dist(q[0], q[2])
+        d = math.dist(c1, c2)
+        if d < 1e-12:
+            return []
+        a = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
+        h2 = r1 * r1 - a * a
+        if h2 < 0:
+            return []
+        h, ux, uy = math.sqrt(h2), (c2[0] - c1[0]) / d, (c2[1] - c1[1]) / d
+        mx, my = c1[0] + a * ux, c1[1] + a * uy
+        return [(mx - h * uy, my + h * ux), (mx + h * uy, my - h * ux)]
+
+    def inside(piece, x, margin=1e-6):
+        s, e, cc, ccw = piece
+        if cc is None:
+            dx, dy = e[0] - s[0], e[1] - s[1]
+            L = math.hypot(dx, dy)
+            t = ((x[0] - s[0]) * dx + (x[1] - s[1]) * dy) / L
+            return margin < t < L - margin
+        sw = _sweep(cc, s, e, ccw)
+        a0 = math.atan2(s[1] - cc[1], s[0] - cc[0])
+        ax = math.atan2(x[1] - cc[1], x[0] - cc[0])
+        d = ((ax - a0) if ccw else (a0 - ax)) % (2 * math.pi)
+        r = math.dist(s, cc)
+        return margin < d * r < sw * r - margin
+
+    for k in range(n):
+        p, q = el((k - 1) % n), el(k)
+        if p[2] is None and q[2] is None:
+            continue
+        t1, t2 = tangent(p, True), tangent(q, False)
+        if side * (t1[0] * t2[1] - t1[1] * t2[0]) >= 0:
+            continue                                  # not an outside corner for the tool
+        op, oq = offset(p), offset(q)
+        if op is None or oq is None:
+            continue
+        if any(inside(op, x) and inside(oq, x) for x in crossings(op, oq)):
+            return True
+    return False
+
+
+def run_compensated(args, runner, t_start) -> tuple:
+    """Mode 2: (failures, summary line)."""
+    generator = args.generator or os.path.join(os.path.dirname(os.path.abspath(args.ncoffset)),
+                                               'tests', 'ncoffset_random_contours')
+    contours = shared_contours(generator, args.seed, args.count, args.decimals)
+    failures, agree, exceptions, g17, g18, worst_all, arcs = [], 0, 0, 0, 0, 0.0, 0
+    for c in contours:
+        name = f"s{c.index:04d}_{c.plane}"
+        if curved_outside_crossing(c):
+            exceptions += 1
+            if args.verbose:
+                print(f"{name}: skipped (an outside corner whose equidistants cross)")
+            continue
+        ngc_lines, mpf_lines = shared_blocks(c, 'ngc'), shared_blocks(c, 'mpf')
+        ngc, mpf = write_programs(runner.workdir, name, ngc_lines, mpf_lines)
+        rc, rs_text, rs_err = runner.run_rs274(ngc)
+        if rc != 0 or rs_err:
+            failures.append(f"{name}: rs274 refused the program ({rc}): {rs_err}\n    {ngc}")
+            continue
+        rc, nc_text, nc_err = runner.run_ncoffset(mpf)
+        if rc != 0:
+            failures.append(f"{name}: ncoffset failed ({rc}): {nc_err.strip()}\n    {mpf}")
+            continue
+        rs = parse_rs274(rs_text)
+        nc = parse_ncoffset(nc_text, plane_lookup(mpf_lines))
+        # One full steady lap of each: between two passes through a point of ncoffset's lap 2
+        # that rs274's path contains too (a sharp corner's point is the same in both).
+        lap2 = {1 + k for k, (_, role) in enumerate(mpf_lines) if role and role[1] == 1}
+        laps = None
+        for cand in (sg for sg in nc if sg.line in lap2):
+            nc_lap, rs_lap = steady_lap(nc, cand.end), steady_lap(rs, cand.end)
+            if nc_lap is not None and rs_lap is not None:
+                laps = ([cand] + nc_lap, [cand] + rs_lap)
+                break
+        if laps is None:
+            failures.append(f"{name}: no point of ncoffset's lap 2 recurs in rs274's path\n"
+                            f"    {ngc}\n    {mpf}")
+            continue
+        a, b = _pieces(laps[0], c.plane), _pieces(laps[1], c.plane)
+        d1, at1 = path_distance(a, b)
+        d2, at2 = path_distance(b, a)
+        worst = max(d1, d2)
+        worst_all = max(worst_all, worst)
+        if worst > COMP_TOL:
+            at = at1 if d1 >= d2 else at2
+            failures.append(f"{name} ({c.plane}, {c.side}, R {c.radius}): the tool-centre paths "
+                            f"differ by {worst:.6f} mm at ({at[0]:.4f}, {at[1]:.4f}) "
+                            f"(plane coordinates)\n    {ngc}\n    {mpf}")
+            continue
+        agree += 1
+        g17 += c.plane == 'G17'
+        g18 += c.plane == 'G18'
+        arcs += sum(1 for e in c.elements if e[0] == 'arc')
+        if args.verbose:
+            print(f"{name}: agree within {worst:.2e} mm")
+    elapsed = time.monotonic() - t_start
+    summary = (f"differential_rs274 [compensated, random_contour.hpp contours with {args.decimals} "
+               f"decimals, seed {args.seed}]: {agree} of {len(contours)} contours agree within "
+               f"{COMP_TOL} mm ({g17} G17, {g18} G18, {arcs} arcs; largest difference "
+               f"{worst_all:.2e} mm), {exceptions} left out (outside corners whose equidistants "
+               f"cross), {len(failures)} disagree, in {elapsed:.1f} s")
+    return failures, summary
+
 # --------------------------------------------------------------------------------------------
 
 def find_rs274(args) -> str | None:
@@ -567,7 +858,12 @@ def main() -> int:
     ap.add_argument('-n', '--count', type=int, default=40, help='number of contours (default 40)')
     ap.add_argument('--seed', type=int, default=1, help='generator seed (default 1)')
     ap.add_argument('--compensated', action='store_true',
-                    help='mode 2: G41/G42 + G450 with a 2 mm tool, compare the tool-centre path')
+                    help='mode 2: the contours of tests/support/random_contour.hpp with G41/G42 '
+                         'and G450, compare one steady lap of the tool-centre paths')
+    ap.add_argument('--generator', help='mode 2: ncoffset_random_contours (default: '
+                                        'tests/ncoffset_random_contours beside --ncoffset)')
+    ap.add_argument('--decimals', type=int, default=4,
+                    help='mode 2: decimals of the coordinates (3, 4 or 6; default 4)')
     ap.add_argument('--keep', help='write the programs and outputs here (kept afterwards)')
     ap.add_argument('-v', '--verbose', action='store_true')
     args = ap.parse_args()
@@ -590,14 +886,21 @@ def main() -> int:
             keep = True
             return 1
 
-        mode = 'compensated (G41/G42, G450, r=2 mm)' if args.compensated else 'programmed path (G40)'
+        if args.compensated:
+            failures, summary = run_compensated(args, runner, t_start)
+            for f in failures:
+                print(f"DISAGREEMENT {f}")
+            print(summary)
+            print(f"differential: {args.count - len(failures)} passed or left out, "
+                  f"{len(failures)} failed")
+            return 1 if failures else 0
+        mode = 'programmed path (G40)'
         totals = dict(contours=0, segments=0, contour_segments=0, arcs=0, over180=0, convex=0,
                       concave=0, g17=0, g18=0)
-        cannot_compensate = []    # (name, first alarm line) where ncoffset answered 99010
         for i in range(args.count):
             c = generate(i, args.seed)
-            ngc_lines = blocks(c, args.compensated, 'ngc')
-            mpf_lines = blocks(c, args.compensated, 'mpf')
+            ngc_lines = blocks(c, 'ngc')
+            mpf_lines = blocks(c, 'mpf')
             name = f"c{i:03d}_{c.plane}"
             ngc, mpf = write_programs(workdir, name, ngc_lines, mpf_lines)
             rc, rs_text, rs_err = runner.run_rs274(ngc)
@@ -605,10 +908,6 @@ def main() -> int:
                 failures.append(f"{name}: rs274 refused the program ({rc}): {rs_err}\n    {ngc}")
                 continue
             rc, nc_text, nc_err = runner.run_ncoffset(mpf)
-            if args.compensated and rc == 2 and 'alarm 99010' in nc_err:
-                # Go on with rs274 alone: it still shows that the programs are valid.
-                cannot_compensate.append((name, nc_err.strip().splitlines()[0], mpf))
-                continue
             if rc != 0:
                 failures.append(f"{name}: ncoffset failed ({rc}): {nc_err.strip()}\n    {mpf}")
                 continue
@@ -616,22 +915,6 @@ def main() -> int:
                 f.write(nc_text)
             rs = parse_rs274(rs_text)
             nc = parse_ncoffset(nc_text, plane_lookup(mpf_lines))
-            if args.compensated:
-                # One full steady lap in both outputs: between two consecutive passes through a
-                # point of lap 2 that both paths contain (the first such end point of ncoffset's
-                # rows for lap 2), away from the approach and the retract.
-                lap2 = {1 + k for k, (_, role) in enumerate(mpf_lines) if role and role[1] == 1}
-                laps = None
-                for cand in (sg for sg in nc if sg.line in lap2):
-                    nc_lap, rs_lap = steady_lap(nc, cand.end), steady_lap(rs, cand.end)
-                    if nc_lap is not None and rs_lap is not None:
-                        laps = (nc_lap, rs_lap)
-                        break
-                if laps is None:
-                    failures.append(f"{name}: no point of ncoffset's lap 2 recurs in rs274's path "
-                                    f"(the compensated paths differ everywhere)\n    {ngc}\n    {mpf}")
-                    continue
-                nc, rs = laps
             diff = compare_segments(nc, rs)
             if diff:
                 failures.append(f"{name} ({c.plane}, {'CCW' if c.ccw else 'CW'} contour): {diff}\n"
@@ -648,14 +931,6 @@ def main() -> int:
             if args.verbose:
                 print(f"{name}: {len(nc)} segments agree")
         elapsed = time.monotonic() - t_start
-        if cannot_compensate and totals['contours'] == 0 and not failures:
-            print(f"differential_rs274: SKIP: ncoffset cannot compensate yet "
-                  f"({os.path.basename(cannot_compensate[0][1])}); rs274 ran all {args.count} "
-                  f"compensated programs ({elapsed:.1f} s)")
-            return SKIP
-        # ncoffset compensates some contours but not these: each is a finding, not a skip.
-        failures += [f"{n}: ncoffset answered alarm 99010 where rs274 compensates: {e}\n    {m}"
-                     for n, e, m in cannot_compensate]
         for f in failures:
             print(f"DISAGREEMENT {f}")
         t = totals

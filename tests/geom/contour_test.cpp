@@ -170,6 +170,57 @@ TEST(Contour, CircleCircleIntersection) {
   EXPECT_TRUE(intersect(a, fullCircle({20, 0}, 5)).empty());  // apart
 }
 
+TEST(Contour, ToleranceWindowsAreInMillimetres) {
+  // tol::onElement: from kPoint before the start to kPoint beyond the end, whatever the length.
+  EXPECT_TRUE(tol::onElement(1 + 0.9e-6 / 33, 33));
+  EXPECT_FALSE(tol::onElement(1 + 1.1e-6 / 33, 33));
+  EXPECT_TRUE(tol::onElement(-0.9e-6 / 0.5, 0.5));
+  EXPECT_FALSE(tol::onElement(-1.1e-6 / 0.5, 0.5));
+  EXPECT_TRUE(tol::insideElement(0.5, 1));
+  EXPECT_FALSE(tol::insideElement(0.9e-6, 1));
+  EXPECT_TRUE(tol::pastEnd(1 - 0.9e-6 / 10, 10));
+  EXPECT_FALSE(tol::pastEnd(1 - 1.1e-6 / 10, 10));
+  // The crossing carries the lengths: a 33 mm line and the quarter circle of radius 20.
+  const auto xs = intersect(line({0, 5}, {33, 5}), kQuarter);
+  ASSERT_FALSE(xs.empty());
+  EXPECT_NEAR(xs[0].len1, 33, kTol);
+  EXPECT_NEAR(xs[0].len2, 20 * M_PI / 2, 1e-12);
+}
+
+TEST(Contour, ALinePassingACircleWithinKPointTouchesIt) {
+  const Element half = arc({8, 0}, {2, 0}, {5, 0}, true);  // r = 3 about (5,0)
+  const auto touch = intersect(line({0, 3 + 0.5e-6}, {10, 3 + 0.5e-6}), half);
+  ASSERT_EQ(touch.size(), 1u);
+  expectPoint(touch[0].p, 5, 3 + 0.5e-6);
+  EXPECT_TRUE(intersect(line({0, 3 + 2e-6}, {10, 3 + 2e-6}), half).empty());
+}
+
+TEST(Contour, AnArcEqualToRHasNoEquidistant) {
+  // r = R within kPoint: none (trc3/fillet_r_eq_R_*); r = R + 1e-4: a circle of radius 1e-4.
+  EXPECT_FALSE(equidistant(arc({5, 0}, {0, 5}, {0, 0}, true), 5 - 0.5e-6));
+  auto small = equidistant(arc({5.0001, 0}, {0, 5.0001}, {0, 0}, true), 5);
+  ASSERT_TRUE(small);
+  EXPECT_NEAR(small->radius(), 1e-4, 1e-12);
+}
+
+TEST(Contour, ASpiralsEquidistantKeepsDFromBothEnds) {
+  // An arc from (10,0) to (0,10.002) about (0,0): start radius 10, end radius 10.002 (the end
+  // point rounded, within MD21000). Its equidistant at 2 to the left (inside of the G3): radius 8
+  // at the start, 8.002 at the end, each end on its own normal.
+  const Element sp = arc({10, 0}, {0, 10.002}, {0, 0}, true);
+  auto eq = equidistant(sp, 2);
+  ASSERT_TRUE(eq);
+  expectPoint(eq->p0, 8, 0);
+  expectPoint(eq->p1, 0, 8.002);
+  // A crossing with the spiral is on it: the line x = y meets the spiral at 45 degrees, half
+  // way, where its radius is 10.001: (10.001/sqrt 2, 10.001/sqrt 2).
+  const auto xs = intersect(line({0, 0}, {20, 20}), sp);
+  ASSERT_FALSE(xs.empty());
+  const double h = 10.001 / std::sqrt(2.0);
+  expectPoint(xs.back().p, h, h, 1e-9);
+  EXPECT_NEAR(xs.back().u2, 0.5, 1e-9);
+}
+
 TEST(Contour, PointAt) {
   expectPoint(pointAt(line({0, 0}, {10, 20}), 0.25), 2.5, 5);
   expectPoint(pointAt(kQuarter, 0.5), 50 + 20 * std::sqrt(0.5), 20 - 20 * std::sqrt(0.5), 1e-12);

@@ -54,9 +54,9 @@ TEST(HtmlReport, SummaryDrawingAndTable) {
   EXPECT_NE(html.find("<td>WCS (workpiece, tool tip)</td>"), std::string::npos);
   EXPECT_NE(html.find("<td>ran to the end</td>"), std::string::npos);
   EXPECT_NE(html.find("<td>4 (G0 1, G1 1, G2 1, G3 1)</td>"), std::string::npos) << html;
-  EXPECT_NE(html.find("path length G0</th><td class=\"n\">5.000 mm"), std::string::npos);
+  EXPECT_NE(html.find("path length rapid (G0)</th><td class=\"n\">5.000 mm"), std::string::npos);
   // 10 + twice three quarters of a circle of radius 10: 10 + 30 pi.
-  EXPECT_NE(html.find(fmt::format("path length G1/G2/G3</th><td class=\"n\">{:.3f} mm",
+  EXPECT_NE(html.find(fmt::format("path length at feed</th><td class=\"n\">{:.3f} mm",
                                   10 + 30 * 3.14159265358979323846)),
             std::string::npos);
   // The arcs pass X-10 and Y-10: the box has the arcs, not only their end points.

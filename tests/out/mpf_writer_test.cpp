@@ -151,6 +151,19 @@ TEST(MpfWriter, TiltedArcAsChords) {
   EXPECT_EQ(p[90], "N90 G1 X0 Y7.071068 Z7.071068 ; line 4");
 }
 
+// A circle at rapid traverse (a G0 block's corner circle under radius compensation: no feed)
+// cannot be a G2/G3 at rapid: G0 chords of at most one degree.
+TEST(MpfWriter, RapidArcAsG0Chords) {
+  Segment a = arcSeg(7, Motion::G3, {50, -5, 0}, {55, 0, 0}, {50, 0, 0}, kZ);
+  a.has_feed = false;
+  auto p = program({a});
+  // program() leaves out the header, as for the tilted arc above.
+  ASSERT_EQ(p.size(), 1u + 90u + 1u);
+  EXPECT_EQ(p[0], "; G3 at rapid traverse: 90 chords");
+  EXPECT_EQ(p[1].rfind("N1 G0 X50.087262 Y-4.999238 Z0 ; line 7", 0), 0u) << p[1];
+  EXPECT_EQ(p[90], "N90 G0 X55 Y0 Z0 ; line 7");
+}
+
 TEST(MpfWriter, MessagesWarningsFilesAndTheAlarm) {
   static const std::vector<std::string> kNames = {"MAIN.MPF", "SUB.SPF"};
   FileNames names = [](int i) -> const std::string& { return kNames.at(static_cast<size_t>(i)); };

@@ -101,6 +101,18 @@ TEST(SvgWriter, ConsecutiveSegmentsOfOneStyleShareAnElement) {
   EXPECT_EQ(d[0], "M0 0L1 0L1 -1L0 -1");
 }
 
+// A circle at rapid traverse (a G0 block's corner circle: no feed) is drawn like G0.
+TEST(SvgWriter, RapidArcIsDrawnAsRapid) {
+  Segment rapid = arcSeg(2, Motion::G3, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, kZ);
+  rapid.has_feed = false;
+  std::string svg = draw(View::XY, {lineSeg(1, Motion::G1, {0, 0, 0}, {1, 0, 0}, 5), rapid,
+                                    lineSeg(3, Motion::G0, {0, 1, 0}, {0, 5, 0})});
+  EXPECT_NE(svg.find("class=\"nco-g0\" vector-effect=\"non-scaling-stroke\" d=\"M1 0A1 1 0 0 0 "
+                     "0 -1L0 -5\""),
+            std::string::npos)
+      << svg;
+}
+
 // G3 is counter-clockwise seen from +Z; with y down in SVG that is sweep-flag 0.
 TEST(SvgWriter, ArcFlagsG17AfterTheYFlip) {
   std::string g3 = draw(View::XY, {arcSeg(1, Motion::G3, {10, 0, 0}, {0, 10, 0}, {0, 0, 0}, kZ)});
