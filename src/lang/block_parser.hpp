@@ -147,6 +147,7 @@ class Parser {
   void definition(int col);
   void declarator(VarType type, int string_length);
   void checkVariableName(std::string_view name, size_t at);
+  void checkOneLetterName(char letter, bool array);
   void arrayInitialiser(Decl& d);
 };
 

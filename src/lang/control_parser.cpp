@@ -246,6 +246,7 @@ void Parser::declarator(VarType type, int string_length) {
     }
     expect(']', "']'");
   }
+  if (d.name.size() == 1) checkOneLetterName(d.name[0], d.dims[0] > 0);
   skipSpaces();
   if (peek() == '=' && peek(1) != '=') {
     ++i_;
@@ -258,13 +259,10 @@ void Parser::declarator(VarType type, int string_length) {
   b_.decls.push_back(d);
 }
 
-// A DEF may not define a predefined name (alarm 12170: `DEF REAL X` would make `X=5` an
+// A DEF may not define a predefined name (alarm 12170: `DEF REAL CR` would make `CR=5` an
 // assignment), and a name must have the form of one (PM-NC "Names": the first two characters
-// letters or underscores, at most 31 characters; syntax alarm 12080).
-//
-// Single letters are address letters too, and the manual's rule excludes them; ncoffset still
-// accepts them for now because the shared command-line contract (shared/contract, outside this
-// repository) defines `DEF INT K[2]` and `DEF REAL V` (docs/language.md: decision pending).
+// letters or underscores, at most 31 characters; syntax alarm 12080). One-letter names are
+// decided by checkOneLetterName once the dimensions are read.
 void Parser::checkVariableName(std::string_view name, size_t at) {
   if (name.size() == 1) return;
   if (isPredefinedName(name))
@@ -276,6 +274,23 @@ void Parser::checkVariableName(std::string_view name, size_t at) {
     i_ = at;  // the alarm names the column of the name
     syntax(problem);
   }
+}
+
+// One-letter names (docs/language.md "Variable names", decision): the PM's two-letter rule is a
+// recommendation ("should", PM-NC 12/2019 "Names"); the collision it prevents is with an address
+// that has a meaning in the block. So a letter that moves an axis, names a tool, feed, spindle,
+// function, block, subprogram, pass count or R parameter is alarm 12170, and so are I, J, K as
+// scalars (`K=5` is a circle centre); `K[2]` (an array, always written with `[`) and the letters
+// without a meaning in this channel (A B C E O Q U V W) are accepted.
+void Parser::checkOneLetterName(char letter, bool array) {
+  constexpr std::string_view kAddresses = "DFGHLMNPRSTXYZ";
+  bool interpolation = letter == 'I' || letter == 'J' || letter == 'K';
+  if (kAddresses.find(letter) == std::string_view::npos && (array || !interpolation)) return;
+  raise(AlarmNumber::AlreadyDefined,
+        std::string("name ") + letter +
+            " defined several times: it is an address letter of the block and cannot be a " +
+            (interpolation ? std::string("scalar variable (an array ") + letter + "[n] is allowed)"
+                           : std::string("variable")));
 }
 
 // `SET(..)`, `REP(..)` or `(..)` after the '=' of an array.

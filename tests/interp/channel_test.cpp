@@ -159,11 +159,11 @@ TEST(Channel, BlockLimit) {
 
 TEST(Channel, ControlFlowAndVariables) {
   Outcome r =
-      run("DEF INT I\n"
-          "FOR I=1 TO 3\n"
-          "  G1 X=I*10 F100\n"
+      run("DEF INT II\n"
+          "FOR II=1 TO 3\n"
+          "  G1 X=II*10 F100\n"
           "ENDFOR\n"
-          "IF (I>=3) AND (R1==0)\n"
+          "IF (II>=3) AND (R1==0)\n"
           "  G1 Y5\n"
           "ELSE\n"
           "  G1 Y-5\n"
@@ -230,8 +230,8 @@ TEST(Channel, VariablesJson) {
   Outcome r =
       run("DEF INT K[3]=SET(1,2,3)\n"
           "DEF REAL A=0.1\n"
-          "DEF BOOL F=TRUE\n"
-          "DEF STRING[8] S=\"a\\b\"\n"
+          "DEF BOOL FL=TRUE\n"
+          "DEF STRING[8] ST=\"a\\b\"\n"
           "R1=3\n"
           "R7=1/3\n"
           "M30\n");
@@ -241,19 +241,19 @@ TEST(Channel, VariablesJson) {
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
             "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
-            "\"A\": 0.1, \"F\": true, "
-            "\"K\": [1,2,3], \"S\": \"a\\\\b\"}\n");
+            "\"A\": 0.1, \"FL\": true, "
+            "\"K\": [1,2,3], \"ST\": \"a\\\\b\"}\n");
 }
 
 TEST(Channel, VariablesJsonTwoDimensionsAndNoR) {
-  Outcome r = run("DEF REAL M[2,2]=SET(1,2,3,4.5)\n");
+  Outcome r = run("DEF REAL MM[2,2]=SET(1,2,3,4.5)\n");
   ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
   EXPECT_EQ(r.vars,
             "{\"R\": {}, "
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
             "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
-            "\"M\": [[1,2],[3,4.5]]}\n");
+            "\"MM\": [[1,2],[3,4.5]]}\n");
 }
 
 TEST(Channel, FileNameOfMainProgram) {

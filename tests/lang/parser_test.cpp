@@ -344,7 +344,7 @@ TEST(Parser, DefTypesArraysAndStrings) {
   EXPECT_EQ(a.decls[0].init_count, 3);
   EXPECT_FALSE(a.decls[0].init_rep);
 
-  Block m = parse("DEF REAL M[2,3]=REP(0)");
+  Block m = parse("DEF REAL MM[2,3]=REP(0)");
   ASSERT_EQ(m.decls.size(), 1u);
   EXPECT_EQ(m.decls[0].dims[0], 2);
   EXPECT_EQ(m.decls[0].dims[1], 3);
@@ -358,9 +358,9 @@ TEST(Parser, DefTypesArraysAndStrings) {
   EXPECT_EQ(s.node(s.decls[0].init).text, "abc");
 
   const std::pair<const char*, VarType> kinds[] = {
-      {"DEF BOOL F=TRUE", VarType::Bool}, {"DEF CHAR C", VarType::Char},
-      {"DEF AXIS AX=X", VarType::Axis},   {"DEF FRAME FR", VarType::Frame},
-      {"DEF NCK INT G", VarType::Int},    {"DEF CHAN REAL H", VarType::Real}};
+      {"DEF BOOL FL=TRUE", VarType::Bool}, {"DEF CHAR C", VarType::Char},
+      {"DEF AXIS AX=X", VarType::Axis},    {"DEF FRAME FR", VarType::Frame},
+      {"DEF NCK INT GG", VarType::Int},    {"DEF CHAN REAL HH", VarType::Real}};
   for (const auto& [text, type] : kinds) {
     Block d = parse(text);
     ASSERT_EQ(d.decls.size(), 1u) << text;

@@ -59,8 +59,13 @@ TEST(ReservedNames, DefChecksTheName) {
   EXPECT_EQ(defAlarm("DEF REAL " + std::string(32, 'A')), toInt(AlarmNumber::SyntaxError));
   EXPECT_EQ(defAlarm("DEF REAL " + std::string(31, 'A')), 0);
   EXPECT_EQ(defAlarm("DEF REAL LEN=1, _POS[3], CNT_2"), 0);
-  // Single letters are address letters, but stay accepted for now (docs/language.md).
-  EXPECT_EQ(defAlarm("DEF REAL V"), 0);
+  // One-letter names (docs/language.md "Variable names"): refused where the letter is an
+  // address of the block, I/J/K only as scalars; the others accepted.
+  for (char c : std::string("DFGHLMNPRSTXYZIJK"))
+    EXPECT_EQ(defAlarm(std::string("DEF REAL ") + c), toInt(AlarmNumber::AlreadyDefined)) << c;
+  for (char c : std::string("ABCEOQUVW")) EXPECT_EQ(defAlarm(std::string("DEF REAL ") + c), 0) << c;
+  EXPECT_EQ(defAlarm("DEF INT K[2], I[3]"), 0);
+  EXPECT_EQ(defAlarm("DEF INT M[2]"), toInt(AlarmNumber::AlreadyDefined));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // ncoffset command line: the contract of docs/cli.md (design.md "Command-line contract").
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -17,15 +18,20 @@
 #include "out/svg_writer.hpp"
 #include "out/writers.hpp"
 #include "output_file.hpp"
+#include "progress_line.hpp"
 #include "terminal_text.hpp"
 
 namespace {
 
-// Prints MSG texts to stderr and forwards the path.
+// Prints MSG texts to stderr, keeps the progress line, and forwards the path.
 class MessagePrinter final : public ncoffset::PathSink {
  public:
-  explicit MessagePrinter(ncoffset::PathSink& next) : next_(next) {}
-  void segment(const ncoffset::Segment& s) override { next_.segment(s); }
+  MessagePrinter(ncoffset::PathSink& next, const ncoffset::Channel& channel)
+      : next_(next), channel_(channel), progress_(isatty(fileno(stderr)) != 0) {}
+  void segment(const ncoffset::Segment& s) override {
+    progress_.segment(s, channel_.fileName(s.file));
+    next_.segment(s);
+  }
   void message(const ncoffset::SourceLoc& where, const std::string& text) override {
     ncoffset::cli::printError(fmt::format("{}:{}: message: {}", where.file, where.line, text));
     next_.message(where, text);
@@ -41,6 +47,8 @@ class MessagePrinter final : public ncoffset::PathSink {
 
  private:
   ncoffset::PathSink& next_;
+  const ncoffset::Channel& channel_;
+  ncoffset::cli::ProgressLine progress_;
 };
 
 std::string extensionFormat(const std::string& path) {
@@ -77,7 +85,7 @@ std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
 
 // Runs the init files and the program: exit status 0, 1 (file error) or 2 (alarm).
 int runAll(const Args& a, ncoffset::Channel& channel, ncoffset::PathSink& writer) {
-  MessagePrinter sink(writer);
+  MessagePrinter sink(writer, channel);
   auto report = [&](const ncoffset::RunResult& r) -> int {
     if (r.status == ncoffset::RunResult::Status::FileError) {
       writer.finish(nullptr);

@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "progress_line.hpp"
+
 namespace ncoffset::cli {
 
 namespace {
@@ -48,6 +50,7 @@ std::string terminalSafe(std::string_view text) {
 }
 
 void printError(std::string_view line) {
+  clearProgressLine();
   std::string safe = terminalSafe(line);
   safe.push_back('\n');
   std::fwrite(safe.data(), 1, safe.size(), stderr);
