@@ -156,7 +156,8 @@ int main(int argc, char** argv) {
   app.add_option("--path", a.path,
                  "directory or text archive searched for subprograms and cycles after the "
                  "program's directory (repeatable, in order)")
-      ->allow_extra_args(false);
+      ->allow_extra_args(false)
+      ->check(CLI::ExistingPath);
   app.add_option("-o,--output", a.output, "output file (default: stdout)");
   app.add_option("--format", a.format,
                  "csv | jsonl | svg | html | mpf (default: from the output's extension, else csv)")
