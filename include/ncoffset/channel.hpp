@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ncoffset/alarm.hpp"
 #include "ncoffset/path.hpp"
@@ -67,6 +68,10 @@ class Channel {
 
   // Runs init-file text held in memory (fuzzing, tests).
   RunResult runInitText(const std::string& name, const std::string& text, PathSink& sink);
+
+  // Where subprograms and cycles are searched after the main program's directory, in order
+  // (`--path`): directories, or text archives holding several programs.
+  void setSearchPath(std::vector<std::filesystem::path> path);
 
   // The file name of a Segment::file index.
   const std::string& fileName(int index) const;

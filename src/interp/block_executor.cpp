@@ -72,10 +72,7 @@ void Interpreter::finishBlock() {
     first_.blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
-    if (flow_.depth() > 1)
-      returnFromSubprogram();  // M2/M30 in a subprogram act like M17
-    else
-      endProgram();
+    endWord(words_.end_program);  // section_repeat.cpp
     if (!words_.call.empty())
       raise(AlarmNumber::SyntaxError, "program call and program end in one block");
     motion_before_ = modal_.motion;

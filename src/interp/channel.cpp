@@ -44,7 +44,7 @@ struct Channel::Impl {
     placement.beginRun([this](int id) -> const std::string& { return interp.fileName(id); });
     RunResult r;
     try {
-      interp::LoadedProgram& prog = interp.load(std::move(src));
+      interp::LoadedProgram& prog = interp.load(std::move(src), init);
       interp.run(prog, init);
     } catch (const AlarmError& e) {
       r.status = RunResult::Status::Alarm;
@@ -97,6 +97,10 @@ RunResult Channel::runText(const std::string& name, const std::string& text, Pat
 
 RunResult Channel::runInitText(const std::string& name, const std::string& text, PathSink& sink) {
   return impl_->run(lang::SourceFile::fromString(name, text), sink, true, false);
+}
+
+void Channel::setSearchPath(std::vector<std::filesystem::path> path) {
+  impl_->interp.setSearchPath(std::move(path));
 }
 
 const std::string& Channel::fileName(int index) const {

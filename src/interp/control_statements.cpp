@@ -52,6 +52,10 @@ bool Interpreter::loopStatement(const Stmt& st, bool& jumped) {
   const lang::Block& b = block_;
   ProgramLevel& lvl = flow_.level();
   std::string_view kw = st.name;
+  if (kw == "REPEATB" || (kw == "REPEAT" && st.target >= 0)) {
+    repeatSection(st, jumped);
+    return true;
+  }
   if (kw == "ENDIF" || kw == "REPEAT" || kw == "LOOP") {
     link();
     return true;

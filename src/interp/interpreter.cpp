@@ -53,8 +53,8 @@ decltype(auto) Interpreter::loading(F&& f) {
   }
 }
 
-LoadedProgram& Interpreter::load(std::shared_ptr<lang::SourceFile> source) {
-  return loading([&]() -> LoadedProgram& { return flow_.load(std::move(source)); });
+LoadedProgram& Interpreter::load(std::shared_ptr<lang::SourceFile> source, bool init_file) {
+  return loading([&]() -> LoadedProgram& { return flow_.load(std::move(source), !init_file); });
 }
 
 bool Interpreter::programExists(std::string_view name) {
@@ -114,6 +114,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
             fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",
                         text.size(), max_len));
     if (!text.empty() && text.front() == '%') continue;  // archive header %_N_NAME_MPF
+    if (!macros_.empty()) [[unlikely]]
+      if (macros_.expand(text, expanded_, max_len)) text = expanded_;
     lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
       executeBlock();
@@ -125,6 +127,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     first_.flush();  // the last compensated element ends on its normal
   }
   vars_.endRun(!init_file);
+  if (!init_file) macros_.endRun();
   flow_.clear();
 }
 
@@ -172,11 +175,17 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
   ProgramLevel& lvl = flow_.level();
   std::string_view kw = st.name;
   if (kw == "DEF") {
-    if (!lvl.defs_allowed)
+    // A GUD definition file or an init file may define global user data anywhere.
+    const bool gud = init_file_ && !b.decls.empty() && b.decls.front().global;
+    if (!lvl.defs_allowed && !gud)
       raise(AlarmNumber::IllegalDef,
             "illegal DEF instruction: definitions must stand before the first statement of the "
             "program");
     for (const auto& d : b.decls) define(d);
+    return;
+  }
+  if (kw == "DEFINE") {
+    macros_.define(b.node(st.target).text, b.node(st.expr).text, init_file_);
     return;
   }
   if (kw == "PROC") {
@@ -208,6 +217,10 @@ void Interpreter::endProgram() {
 }
 
 void Interpreter::returnFromSubprogram() {
+  if (flow_.level().section) {
+    flow_.leave();  // a repeated section: the next pass, or back after the REPEAT line
+    return;
+  }
   if (flow_.leave())
     vars_.clearScope();  // the next pass starts without the variables of this one
   else
@@ -244,7 +257,11 @@ void Interpreter::define(const lang::Decl& d) {
                             d.type, d.string_length, name);
     }
   }
-  vars_.add(name, std::move(v));
+  for (const auto& x : v.data) VariableStore::checkLimits(v, x, name);
+  if (d.global && init_file_)
+    vars_.addGlobal(name, std::move(v));
+  else
+    vars_.add(name, std::move(v));
 }
 
 bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool indexed,
@@ -329,7 +346,9 @@ void Interpreter::store(const Node& target, const Value& v) {
     } else if (indexed) {
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} is not an array", target.text));
     }
-    var->data[at] = convertForStore(v, var->type, var->string_length, target.text);
+    Value x = convertForStore(v, var->type, var->string_length, target.text);
+    VariableStore::checkLimits(*var, x, target.text);
+    var->data[at] = std::move(x);
     return;
   }
   writeSystem(target.text, idx, indexed, v);

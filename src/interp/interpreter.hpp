@@ -20,6 +20,7 @@
 #include "interp/variables.hpp"
 #include "lang/block.hpp"
 #include "lang/evaluator.hpp"
+#include "lang/macro_table.hpp"
 #include "lang/parser.hpp"
 #include "lang/program_index.hpp"
 #include "lang/source_file.hpp"
@@ -38,13 +39,16 @@ class Interpreter final : public lang::Environment {
   // Runs a file as an init file or as the main program. Throws AlarmError; `alarmLoc()` then
   // tells where.
   void run(LoadedProgram& program, bool init_file);
-  LoadedProgram& load(std::shared_ptr<lang::SourceFile> source);
+  LoadedProgram& load(std::shared_ptr<lang::SourceFile> source, bool init_file = false);
   SourceLoc alarmLoc(const AlarmError& e) const;
   // The text of the line alarmLoc() names ("" where it is not known).
   std::string alarmSourceLine(const AlarmError& e) const;
   const std::string& fileName(int id) const { return flow_.fileName(id); }
   void writeVariablesJson(std::ostream& out) const;
   void setSearchDir(std::filesystem::path dir) { flow_.setSearchDir(std::move(dir)); }
+  void setSearchPath(std::vector<std::filesystem::path> path) {
+    flow_.setSearchPath(std::move(path));
+  }
 
   // lang::Environment
   bool read(std::string_view name, std::span<const lang::Value> indices, bool indexed,
@@ -71,6 +75,9 @@ class Interpreter final : public lang::Environment {
   decltype(auto) loading(F&& f);
   void returnFromSubprogram();
   void endProgram();
+  // section_repeat.cpp: REPEAT/REPEATB with labels; M17/RET/M2/M30 (`program_end`) by level.
+  void repeatSection(const lang::Stmt& st, bool& jumped);
+  void endWord(bool program_end);
   const lang::ControlLink& link() const { return flow_.link(line_pos_.offset); }
   void define(const lang::Decl& d);
   void assign(const lang::Stmt& st);
@@ -120,6 +127,8 @@ class Interpreter final : public lang::Environment {
   std::string call_name_;  // storage for an L<number> program name
 
   ProgramFlow flow_;
+  lang::MacroTable macros_;  // DEFINE .. AS (PM-JP "Macro technique")
+  std::string expanded_;     // the current block with its macros expanded
 
   lang::Block block_;
   lang::TextPos line_pos_;  // start of the executing line

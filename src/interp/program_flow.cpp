@@ -11,14 +11,23 @@ namespace ncoffset::interp {
 
 using lang::TextPos;
 
-LoadedProgram& ProgramFlow::load(std::shared_ptr<lang::SourceFile> source) {
+LoadedProgram& ProgramFlow::load(std::shared_ptr<lang::SourceFile> source, bool programs) {
+  if (programs)
+    if (LoadedProgram* first = loadArchive(source, main_archive_)) return *first;
+  return loadRange(std::move(source), TextPos{}, kNoOffset);
+}
+
+LoadedProgram& ProgramFlow::loadRange(std::shared_ptr<lang::SourceFile> source, TextPos begin,
+                                      size_t end) {
   auto p = std::make_unique<LoadedProgram>();
   p->file_id = static_cast<int>(files_.size());
   p->source = std::move(source);
+  p->begin = begin;
+  p->end = end;
   files_.push_back(std::move(p));
   LoadedProgram& prog = *files_.back();
   prog.index = std::make_unique<lang::ProgramIndex>(*prog.source, limits_.max_control_depth,
-                                                    limits_.max_line_length);
+                                                    limits_.max_line_length, begin, end);
   return prog;
 }
 
@@ -30,33 +39,54 @@ void ProgramFlow::begin(LoadedProgram& main) {
   levels_.clear();
   ProgramLevel level;
   level.program = &main;
+  level.pos = main.begin;
+  level.watch = main.end;
   levels_.push_back(level);
 }
 
 LoadedProgram* ProgramFlow::find(std::string_view name) {
   std::string key(name);
   if (auto it = by_name_.find(key); it != by_name_.end()) return it->second;
-  if (!dir_scanned_) {
-    dir_scanned_ = true;
-    std::error_code ec;
-    std::filesystem::path dir = search_dir_.empty() ? std::filesystem::path(".") : search_dir_;
+  LoadedProgram* prog = nullptr;
+  if (auto it = main_archive_.find(key); it != main_archive_.end()) prog = it->second;
+  if (!prog) prog = findIn(search_dir_, key);
+  for (size_t k = 0; !prog && k < search_path_.size(); ++k) prog = findIn(search_path_[k], key);
+  if (prog) by_name_.emplace(key, prog);
+  return prog;
+}
+
+// One place of the search: a directory, or a text archive holding several programs.
+LoadedProgram* ProgramFlow::findIn(const std::filesystem::path& place, const std::string& key) {
+  std::error_code ec;
+  const std::filesystem::path dir = place.empty() ? std::filesystem::path(".") : place;
+  if (std::filesystem::is_regular_file(dir, ec)) {
+    auto archive = archives_.find(dir);
+    if (archive == archives_.end()) {
+      archive = archives_.emplace(dir, std::map<std::string, LoadedProgram*>{}).first;
+      std::string err;
+      if (auto src = lang::SourceFile::load(dir, &err)) loadArchive(src, archive->second);
+    }
+    auto it = archive->second.find(key);
+    return it == archive->second.end() ? nullptr : it->second;
+  }
+  auto listed = dir_entries_.find(dir);
+  if (listed == dir_entries_.end()) {
+    listed = dir_entries_.emplace(dir, std::map<std::string, std::filesystem::path>{}).first;
     for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
       std::string fn = e.path().filename().string();
       for (auto& c : fn) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-      dir_entries_.emplace(fn, search_dir_.empty() ? e.path().filename() : e.path());
+      listed->second.emplace(fn, place.empty() ? e.path().filename() : e.path());
     }
   }
   const std::string candidates[] = {key + ".SPF", "_N_" + key + "_SPF", key + ".MPF",
                                     "_N_" + key + "_MPF", key};
   for (const auto& c : candidates) {
-    auto it = dir_entries_.find(c);
-    if (it == dir_entries_.end()) continue;
+    auto it = listed->second.find(c);
+    if (it == listed->second.end()) continue;
     std::string err;
     auto src = lang::SourceFile::load(it->second, &err);
     if (!src) continue;
-    LoadedProgram* prog = &load(std::move(src));
-    by_name_.emplace(key, prog);
-    return prog;
+    return &load(std::move(src));
   }
   return nullptr;
 }
@@ -72,11 +102,13 @@ void ProgramFlow::call(std::string_view name, long long repeat) {
   LoadedProgram* prog = find(name);
   if (!prog)
     raise(AlarmNumber::ProgramNotFound,
-          fmt::format(
-              "program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main program)",
-              name, name, name));
+          fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main "
+                      "program{})",
+                      name, name, name, search_path_.empty() ? "" : " and in the --path entries"));
   ProgramLevel lvl;
   lvl.program = prog;
+  lvl.pos = prog->begin;
+  lvl.watch = prog->end;
   lvl.repeat_left = repeat - 1;
   levels_.push_back(lvl);
 }
@@ -85,7 +117,13 @@ bool ProgramFlow::leave() {
   ProgramLevel& lvl = levels_.back();
   if (lvl.repeat_left > 0) {
     --lvl.repeat_left;
-    lvl.pos = TextPos{};
+    if (lvl.section) {
+      lvl.pos = lvl.section_start;
+      lvl.watch = lvl.section_end;
+      lvl.ending = false;
+      return true;
+    }
+    lvl.pos = lvl.program->begin;
     lvl.defs_allowed = true;
     return true;
   }
@@ -112,12 +150,14 @@ const std::vector<TextPos>& ProgramFlow::blockNumberLines(LoadedProgram& prog, l
   if (auto it = prog.block_numbers.find(n); it != prog.block_numbers.end()) return it->second;
   // One scan of the file per distinct target number.
   std::vector<TextPos> found;
-  TextPos p;
+  TextPos p = prog.begin;
   std::string_view text;
   std::string norm;
+  const std::string_view all = prog.source->text();
+  const std::string_view lines = prog.end < all.size() ? all.substr(0, prog.end) : all;
   while (true) {
     TextPos at = p;
-    if (!lang::nextLine(prog.source->text(), p, text)) break;
+    if (!lang::nextLine(lines, p, text)) break;
     if (!lang::normalizeLine(text.substr(0, 40), norm, nullptr)) continue;
     size_t i = norm.find_first_not_of(' ');
     if (i == std::string::npos) continue;
@@ -158,12 +198,21 @@ bool ProgramFlow::jumpToBlockNumber(long long n, size_t here, JumpSearch search)
 
 bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch search) {
   ProgramLevel& lvl = levels_.back();
-  const TextPos* p = lvl.program->index->label(label);
-  if (p && ((search.forward && p->offset > here) || (search.backward && p->offset < here) ||
-            (search.here_too && p->offset == here))) {
-    lvl.pos = *p;
-    return true;
-  }
+  const std::vector<TextPos>* lines = lvl.program->index->labels(label);
+  if (!lines) return false;
+  // The first occurrence the search meets (PM-NC "Program jumps": the destination is searched
+  // from the jumping block in the jump's direction), so a label may stand more than once.
+  if (search.forward)
+    for (const auto& p : *lines)
+      if (p.offset > here) {
+        lvl.pos = p;
+        return true;
+      }
+  for (auto r = lines->rbegin(); r != lines->rend(); ++r)
+    if ((search.backward && r->offset < here) || (search.here_too && r->offset == here)) {
+      lvl.pos = *r;
+      return true;
+    }
   return false;
 }
 

@@ -19,8 +19,14 @@
 
 namespace ncoffset::interp {
 
+inline constexpr size_t kNoOffset = static_cast<size_t>(-1);
+
 struct LoadedProgram {
   std::shared_ptr<lang::SourceFile> source;
+  // The program's lines: the whole file, or one program of a text archive (the lines after
+  // its `%_N_NAME_SPF` header up to the next header; docs/language.md "Text archives").
+  lang::TextPos begin;
+  size_t end = kNoOffset;
   std::unique_ptr<lang::ProgramIndex> index;
   int file_id = 0;
   // Positions of block numbers used as jump targets, found on demand (N number -> lines).
@@ -33,6 +39,24 @@ struct ProgramLevel {
   lang::TextPos pos;  // next line to read
   long long repeat_left = 0;
   bool defs_allowed = true;
+  // The line where this level stops (kNoOffset: at the end of the file): the end of an
+  // archived program, or of a repeated program section. `watch_inclusive`: the line is still
+  // executed (the end label of REPEAT A B, the block of REPEATB), else the level stops before it.
+  size_t watch = kNoOffset;
+  bool watch_inclusive = false;
+  bool ending = false;  // the inclusive end line was read: the next read ends the pass
+  // A program section repetition (REPEAT/REPEATB; PM-JP "Program section repetition"): a level
+  // of its own over the same program, without variables of its own.
+  bool section = false;
+  lang::TextPos section_start;
+  size_t section_end = kNoOffset;
+};
+
+// A program section to repeat: its first line and the line it ends at.
+struct Section {
+  lang::TextPos start;
+  size_t end = kNoOffset;  // offset of the end line
+  bool inclusive = false;  // the end line belongs to the section
 };
 
 // Which way a jump searches (GOTOF, GOTOB, GOTO/GOTOC: forward first, then backward).
@@ -47,7 +71,10 @@ class ProgramFlow {
   explicit ProgramFlow(const Limits& limits) : limits_(limits) {}
 
   // Loads a program and indexes its control structures (alarms 12640/12641 from the index).
-  LoadedProgram& load(std::shared_ptr<lang::SourceFile> source);
+  // A text archive of several programs given as the program: its programs are found first by
+  // the subprogram search, and the first main program (_MPF) in it runs (`programs` false for
+  // an init file, which runs as a whole).
+  LoadedProgram& load(std::shared_ptr<lang::SourceFile> source, bool programs = true);
   size_t fileCount() const { return files_.size(); }
   const std::string& fileName(int id) const {
     return files_[static_cast<size_t>(id)]->source->name();
@@ -66,6 +93,8 @@ class ProgramFlow {
   bool nextLine(std::string_view& text, lang::TextPos& at) {
     ProgramLevel& lvl = levels_.back();
     at = lvl.pos;
+    if (at.offset == lvl.watch) [[unlikely]]
+      return watchedLine(lvl, text);
     return lang::nextLine(lvl.program->source->text(), lvl.pos, text);
   }
   // A subprogram call with pass count P (alarms 14012 too deep, 12160 pass count, 14011 not
@@ -73,6 +102,18 @@ class ProgramFlow {
   void call(std::string_view name, long long repeat);
   // The current level ends: true if it runs again (pass count), false if it was left.
   bool leave();
+
+  // --- program section repetition (section_repeat.cpp) ---
+  // Repeats `s` of the current program `count` times as a level of its own (alarms 14012 too
+  // deep, 12160 pass count); the caller's level continues after the REPEAT line.
+  void repeatSection(const Section& s, long long count);
+  // M17/RET in a repeated section: the repetition ends (the level is left at once).
+  void abortSection() { levels_.pop_back(); }
+  // Whether M2/M30 in the current level ends the whole program: the level is the main
+  // program or a section repeated in it.
+  bool inMainProgram() const;
+  // The label lines of `label` in the current program (nullptr if there is none).
+  const std::vector<lang::TextPos>* labelLines(std::string_view label) const;
 
   // --- jumps in the current level ---
   // The level reads next from the line after `line`.
@@ -85,19 +126,36 @@ class ProgramFlow {
   bool jumpToBlockNumber(long long n, size_t here, JumpSearch search);
   bool jumpToLabel(const std::string& label, size_t here, JumpSearch search);
 
-  // The subprogram `name` (upper case) beside the main program, loaded on first use; nullptr if
-  // there is none.
+  // The subprogram `name` (upper case), loaded on first use; nullptr if there is none. The one
+  // search every call form uses (docs/language.md "Where programs are found"): beside the main
+  // program, then each --path entry in order (a directory, or a text archive); in each place
+  // NAME.SPF, _N_NAME_SPF, NAME.MPF, _N_NAME_MPF, NAME, case-insensitive.
   LoadedProgram* find(std::string_view name);
+  // The --path entries, searched after the main program's directory.
+  void setSearchPath(std::vector<std::filesystem::path> path) { search_path_ = std::move(path); }
+  // The programs of a text archive (each `%_N_NAME_xxx` section) become known by name; returns
+  // the first main program (_MPF) section or else the first section, nullptr if `source` is no
+  // archive of several programs.
+  LoadedProgram* loadArchive(const std::shared_ptr<lang::SourceFile>& source,
+                             std::map<std::string, LoadedProgram*>& into);
 
  private:
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
+  bool watchedLine(ProgramLevel& lvl, std::string_view& text);
+  LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
+  LoadedProgram& loadRange(std::shared_ptr<lang::SourceFile> source, lang::TextPos begin,
+                           size_t end);
 
   Limits limits_;
   std::vector<std::unique_ptr<LoadedProgram>> files_;
   std::map<std::string, LoadedProgram*> by_name_;  // upper-case program name -> program
   std::filesystem::path search_dir_;
-  std::map<std::string, std::filesystem::path> dir_entries_;  // upper-case file name -> path
-  bool dir_scanned_ = false;
+  std::vector<std::filesystem::path> search_path_;
+  // Per searched directory: upper-case file name -> path (listed once, on first use).
+  std::map<std::filesystem::path, std::map<std::string, std::filesystem::path>> dir_entries_;
+  // The programs of each archive (the main program's, --path entries), by upper-case name.
+  std::map<std::filesystem::path, std::map<std::string, LoadedProgram*>> archives_;
+  std::map<std::string, LoadedProgram*> main_archive_;  // the archive given as the program
   std::vector<ProgramLevel> levels_;
 };
 

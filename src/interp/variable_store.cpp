@@ -98,6 +98,7 @@ UserVariable VariableStore::prepare(const lang::Decl& d) const {
   v.dims[0] = d.dims[0];
   v.dims[1] = d.dims[1];
   v.string_length = d.string_length;
+  v.attributes = d.attributes;
   size_t count = 1;
   if (d.dims[0] > 0) {
     count = static_cast<size_t>(d.dims[0]) * static_cast<size_t>(d.dims[1] > 0 ? d.dims[1] : 1);
@@ -121,6 +122,23 @@ void VariableStore::add(std::string_view name, UserVariable v) {
   element_count_ += v.data.size();
   ++variable_count_;
   current().emplace(std::string(name), std::move(v));
+}
+
+void VariableStore::addGlobal(std::string_view name, UserVariable v) {
+  element_count_ += v.data.size();
+  ++variable_count_;
+  globals_.emplace(std::string(name), std::move(v));
+}
+
+void VariableStore::checkLimits(const UserVariable& var, const Value& v, std::string_view name) {
+  const lang::DefAttributes& a = var.attributes;
+  if (!v.isNumeric() || (!a.has_lower && !a.has_upper)) return;
+  if ((a.has_lower && v.num < a.lower && !lang::realEqual(v.num, a.lower)) ||
+      (a.has_upper && v.num > a.upper && !lang::realEqual(v.num, a.upper)))
+    raise(AlarmNumber::ValueRange,
+          fmt::format("value range exceeded: {} = {} outside its limits{}{}", name, v.num,
+                      a.has_lower ? fmt::format(" LLI {}", a.lower) : std::string(),
+                      a.has_upper ? fmt::format(" ULI {}", a.upper) : std::string()));
 }
 
 size_t VariableStore::elementIndex(const UserVariable& var, std::span<const Value> idx,

@@ -49,6 +49,11 @@ class VariableStore {
   // with its type's initial value, then adding it to the current level.
   UserVariable prepare(const lang::Decl& d) const;
   void add(std::string_view name, UserVariable v);
+  // A global user variable (DEF NCK/CHAN in an init or GUD definition file): seen by every
+  // program level of every later run (docs/language.md "Global user data").
+  void addGlobal(std::string_view name, UserVariable v);
+  // Alarm 12160 when `v` lies outside the LLI/ULI limits of `var`.
+  static void checkLimits(const UserVariable& var, const lang::Value& v, std::string_view name);
   // The flat element index of `var[idx]` (alarms 17020/17030).
   static size_t elementIndex(const UserVariable& var, std::span<const lang::Value> idx,
                              std::string_view name);

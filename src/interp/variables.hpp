@@ -15,7 +15,8 @@ struct UserVariable {
   lang::VarType type = lang::VarType::Real;
   int dims[2] = {0, 0};  // 0: scalar
   int string_length = 0;
-  std::vector<lang::Value> data;  // one element for scalars, row-major for arrays
+  std::vector<lang::Value> data;   // one element for scalars, row-major for arrays
+  lang::DefAttributes attributes;  // LLI/ULI limits of the DEF
   bool isArray() const { return dims[0] > 0; }
 };
 

@@ -100,6 +100,11 @@ struct Stmt {
 
 // Variable declaration from DEF.
 enum class VarType : std::uint8_t { Int, Real, Bool, String, Char, Axis, Frame };
+// The attributes of a DEF that ncoffset keeps: the limits LLI/ULI (PM-JP "Attributes").
+struct DefAttributes {
+  bool has_lower = false, has_upper = false;
+  double lower = 0, upper = 0;
+};
 struct Decl {
   VarType type = VarType::Real;
   std::string_view name;
@@ -110,6 +115,8 @@ struct Decl {
   int init_count = 0;
   bool init_rep = false;  // REP(x): fill the array with x
   int column = 0;
+  bool global = false;  // DEF NCK / DEF CHAN: global user data (GUD)
+  DefAttributes attributes;
 };
 
 struct Block {

@@ -141,6 +141,9 @@ class Parser {
   // --- control_parser.cpp -----------------------------------------------------------------------
   int jumpTarget();
   void controlStatement(std::string_view kw, int col);
+  void repeatStatement(Stmt& st);
+  bool attribute(DefAttributes& a);
+  void macroDefinition(Stmt& st);
   void forStatement(Stmt& st);
   void procStatement(Stmt& st);
   void caseArms();

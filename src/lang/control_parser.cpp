@@ -93,6 +93,14 @@ void Parser::controlStatement(std::string_view kw, int col) {
     procStatement(st);
     return;
   }
+  if (kw == "REPEATB" || (kw == "REPEAT" && (skipSpaces(), i_ < s_.size()))) {
+    repeatStatement(st);
+    return;
+  }
+  if (kw == "DEFINE") {
+    macroDefinition(st);
+    return;
+  }
   b_.stmts.push_back(st);  // ELSE, ENDIF, ENDWHILE, ENDFOR, REPEAT, LOOP, ENDLOOP
 }
 
@@ -152,6 +160,66 @@ void Parser::procStatement(Stmt& st) {
   // Attributes such as SAVE or DISPLOF may follow; they are kept as calls.
 }
 
+// REPEAT <start> [<end>] [P=<n>] and REPEATB <label> [P=<n>] (PM-JP "Program section
+// repetition"): target is the start label, expr2 the end label, expr the pass count.
+void Parser::repeatStatement(Stmt& st) {
+  auto label = [&] {
+    skipSpaces();
+    std::string_view name = ident();
+    if (name.size() < 2 || !isLabelStart(name[0], name[1]))
+      syntax("jump label expected (a label name starts with two letters or underscores)");
+    Node n;
+    n.kind = NodeKind::Name;
+    n.text = name;
+    return addNode(n);
+  };
+  auto passCount = [&] {
+    skipSpaces();
+    if (peek() != 'P' || (peek(1) != '=' && !isDigit(peek(1)))) return false;
+    ++i_;
+    if (peek() == '=') ++i_;
+    st.expr = expression();
+    return true;
+  };
+  skipSpaces();
+  if (!isAlpha(peek())) syntax("jump label expected after " + std::string(st.name));
+  st.target = label();
+  if (!passCount() && st.name == "REPEAT") {
+    skipSpaces();
+    if (isAlpha(peek())) {
+      st.expr2 = label();
+      passCount();
+    }
+  }
+  skipSpaces();
+  if (i_ < s_.size()) syntax("nothing may follow the pass count of " + std::string(st.name));
+  b_.stmts.push_back(st);
+}
+
+// DEFINE <name> AS <text> (PM-JP "Macro technique"): target names the macro, expr holds its
+// text as a String node (the rest of the block, upper-cased, without its comment).
+void Parser::macroDefinition(Stmt& st) {
+  skipSpaces();
+  if (!isAlpha(peek()) && peek() != '_') syntax("macro name expected after DEFINE");
+  Node name;
+  name.kind = NodeKind::Name;
+  name.text = ident();
+  st.target = addNode(name);
+  skipSpaces();
+  if (!wordAhead("AS")) syntax("AS expected after the macro name");
+  i_ += 2;
+  skipSpaces();
+  size_t end = s_.size();
+  while (end > i_ && (s_[end - 1] == ' ' || s_[end - 1] == '\t')) --end;
+  if (end == i_) syntax("macro text expected after AS");
+  Node text;
+  text.kind = NodeKind::String;
+  text.text = s_.substr(i_, end - i_);
+  st.expr = addNode(text);
+  i_ = s_.size();
+  b_.stmts.push_back(st);
+}
+
 void Parser::caseArms() {
   while (true) {
     skipSpaces();
@@ -179,11 +247,19 @@ void Parser::caseArms() {
 // DEF [NCK|CHAN] <type> <name>[[dims]][=init], ...
 void Parser::definition(int col) {
   skipSpaces();
+  size_t at = i_;
   std::string_view w = ident();
-  if (w == "NCK" || w == "CHAN") {  // global user data: same handling in one channel
-    skipSpaces();
-    w = ident();
+  bool global = false;
+  if (w == "NCK" || w == "CHAN") {  // global user data (GUD): one channel, so both alike
+    global = true;
+  } else {
+    i_ = at;
   }
+  DefAttributes attr;
+  while (attribute(attr)) {
+  }
+  skipSpaces();
+  w = ident();
   VarType type;
   if (!typeOf(w, type))
     syntax("data type expected after DEF (INT, REAL, BOOL, STRING, CHAR, AXIS, FRAME)");
@@ -199,6 +275,10 @@ void Parser::definition(int col) {
     string_length = static_cast<int>(len);
     expect(']', "']'");
   }
+  // Attributes may follow the type too (PM-JP "Attributes": DEF CHAN REAL PHU 1 LLI 0 ...).
+  while (attribute(attr)) {
+  }
+  const size_t first_decl = b_.decls.size();
   while (true) {
     declarator(type, string_length);
     skipSpaces();
@@ -210,11 +290,50 @@ void Parser::definition(int col) {
   }
   skipSpaces();
   if (i_ < s_.size()) syntax("unexpected text after DEF");
+  for (size_t k = first_decl; k < b_.decls.size(); ++k) {
+    b_.decls[k].global = global;
+    b_.decls[k].attributes = attr;
+  }
   Stmt st;
   st.kind = StmtKind::Keyword;
   st.name = "DEF";
   st.column = col;
   b_.stmts.push_back(st);
+}
+
+// The attributes of a definition (PM-JP "Definition of user variables" / "Attributes"):
+// SYNR/SYNW/SYNRW (preprocessing stop), INIPO/INIRE/INICF/PRLOC (when it is initialised), PHU
+// <unit>, LLI/ULI <limit>, APR/APW/APRP/APWP/APRB/APWB <level> (access rights). False (and
+// nothing read) when the next word is none of them.
+bool Parser::attribute(DefAttributes& a) {
+  skipSpaces();
+  const size_t at = i_;
+  std::string_view w = ident();
+  if (w == "SYNR" || w == "SYNW" || w == "SYNRW" || w == "INIPO" || w == "INIRE" || w == "INICF" ||
+      w == "PRLOC")
+    return true;  // no effect on the path: ncoffset has no main run to synchronise with
+  const bool limit = w == "LLI" || w == "ULI";
+  if (!(limit || w == "PHU" || w == "APR" || w == "APW" || w == "APRP" || w == "APWP" ||
+        w == "APRB" || w == "APWB")) {
+    i_ = at;
+    return false;
+  }
+  skipSpaces();
+  bool negative = false;
+  if (peek() == '-' || peek() == '+') negative = s_[i_++] == '-';
+  if (!isDigit(peek()) && peek() != '.')
+    syntax(std::string("value expected after ") + std::string(w));
+  bool is_int = false;
+  double v = scanNumber(is_int);
+  if (negative) v = -v;
+  if (w == "LLI") {
+    a.has_lower = true;
+    a.lower = v;
+  } else if (w == "ULI") {
+    a.has_upper = true;
+    a.upper = v;
+  }
+  return true;
 }
 
 // One variable of a DEF: its name, array dimensions and initial value.

@@ -50,6 +50,8 @@ inline bool isControlKeyword(std::string_view w) {
     case packName("FOR"):
     case packName("ENDFOR"):
     case packName("REPEAT"):
+    case packName("REPEATB"):
+    case packName("DEFINE"):
     case packName("UNTIL"):
     case packName("LOOP"):
     case packName("ENDLOOP"):

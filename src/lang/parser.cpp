@@ -157,6 +157,7 @@ LineHead scanLineHead(std::string_view s) {
     while (j < s.size() && isIdentChar(s[j])) ++j;
   }
   if (i < s.size() && isAlpha(s[i])) h.keyword = s.substr(i, j - i);
+  h.has_arguments = !h.keyword.empty() && s.find_first_not_of(' ', j) != std::string_view::npos;
   if (h.keyword == "IF") {
     // IF <cond> GOTOx <target> is a conditional jump, not a structure.
     for (size_t k = j; k + 4 <= s.size(); ++k) {

@@ -34,7 +34,8 @@ bool normalizeLine(std::string_view text, std::string& out, int* bad_column);
 struct LineHead {
   std::string_view keyword;
   std::string_view label;
-  bool has_goto = false;  // the line contains GOTOF/GOTOB/GOTO/GOTOC (IF as a jump)
+  bool has_goto = false;       // the line contains GOTOF/GOTOB/GOTO/GOTOC (IF as a jump)
+  bool has_arguments = false;  // something follows the keyword (REPEAT LABEL: a section)
 };
 LineHead scanLineHead(std::string_view normalized);
 

@@ -66,9 +66,11 @@ bool mayHoldHead(std::string_view s) {
 
 }  // namespace
 
-ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_line_length) {
+ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_line_length,
+                           TextPos begin, size_t end) {
   std::string_view text = file.text();
-  TextPos pos;
+  if (end < text.size()) text = text.substr(0, end);
+  TextPos pos = begin;
   std::string_view line;
   std::string norm;
   std::vector<Open> stack;
@@ -87,15 +89,17 @@ ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_lin
       h = scanLineHead(norm);
     }
     if (!h.label.empty()) {
-      std::string name(h.label);
-      if (labels_.count(name))
-        throw AlarmError(AlarmNumber::SyntaxError, fmt::format("label {} defined twice", name),
-                         here.line);
-      labels_.emplace(std::move(name), here);
+      auto it = labels_.find(h.label);
+      if (it == labels_.end())
+        it = labels_.emplace(std::string(h.label), std::vector<TextPos>{}).first;
+      it->second.push_back(here);
     }
     std::string_view kw = h.keyword;
     if (kw.empty()) continue;
     if (kw == "IF" && h.has_goto) continue;
+    // REPEAT with a label after it repeats a program section (PM-JP "Program section
+    // repetition"); only the bare REPEAT opens a REPEAT..UNTIL loop.
+    if (kw == "REPEAT" && h.has_arguments) continue;
     if (kw == "IF" || kw == "WHILE" || kw == "FOR" || kw == "REPEAT" || kw == "LOOP") {
       if (static_cast<int>(stack.size()) >= max_depth)
         throw AlarmError(

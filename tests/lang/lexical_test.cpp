@@ -16,11 +16,11 @@ TEST(Lexical, PackName) {
 }
 
 TEST(Lexical, Keywords) {
-  for (const char* kw :
-       {"DEF", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "REPEAT", "UNTIL",
-        "LOOP", "ENDLOOP", "GOTOF", "GOTOB", "GOTO", "GOTOC", "CASE", "PROC"})
+  for (const char* kw : {"DEF",    "IF",     "ELSE",  "ENDIF", "WHILE",   "ENDWHILE", "FOR",
+                         "ENDFOR", "REPEAT", "UNTIL", "LOOP",  "ENDLOOP", "GOTOF",    "GOTOB",
+                         "GOTO",   "GOTOC",  "CASE",  "PROC",  "REPEATB", "DEFINE"})
     EXPECT_TRUE(isControlKeyword(kw)) << kw;
-  EXPECT_FALSE(isControlKeyword("DEFINE"));
+  EXPECT_FALSE(isControlKeyword("DEFINED"));
   EXPECT_FALSE(isControlKeyword("I"));
   EXPECT_EQ(jumpKind("GOTOF"), JumpKind::Gotof);
   EXPECT_EQ(jumpKind("GOTOB"), JumpKind::Gotob);

@@ -163,10 +163,30 @@ TEST(ProgramIndex, Labels) {
   EXPECT_NE(q.index->label("LOWER"), nullptr);
 }
 
-TEST(ProgramIndex, DuplicateLabel) {
-  Failure f = failure("LBL: G1 X1\nG1 X2\nLBL: G1 X3\n");
-  EXPECT_EQ(f.number, toInt(AlarmNumber::SyntaxError));
-  EXPECT_EQ(f.line, 3);
+// A label may stand more than once (the control takes the first it meets in the jump's
+// direction): every line is kept, in file order.
+TEST(ProgramIndex, DuplicateLabelKeepsEveryLine) {
+  Indexed p = build("LBL: G1 X1\nG1 X2\nLBL: G1 X3\n");
+  const auto* lines = p.index->labels("LBL");
+  ASSERT_NE(lines, nullptr);
+  ASSERT_EQ(lines->size(), 2u);
+  EXPECT_EQ((*lines)[0].line, 1);
+  EXPECT_EQ((*lines)[1].line, 3);
+  EXPECT_EQ(p.index->label("LBL")->line, 1);
+}
+
+// REPEAT with a label repeats a section; only the bare REPEAT opens a loop.
+TEST(ProgramIndex, RepeatWithLabelIsNoLoop) {
+  Indexed p = build(
+      "AA: G1 X1\n"           // 1
+      "REPEAT AA P=2\n"       // 2
+      "REPEAT\n"              // 3
+      "  REPEATB AA\n"        // 4
+      "UNTIL R1>0\n"          // 5
+      "REPEAT AA BB P=3\n");  // 6
+  EXPECT_EQ(p.partner(2), 0);
+  EXPECT_EQ(p.partner(3), 5);
+  EXPECT_EQ(p.partner(6), 0);
 }
 
 TEST(ProgramIndex, InvalidNesting12640) {

@@ -64,7 +64,8 @@ std::string extensionFormat(const std::string& path) {
 struct Args {
   std::string program, output, format, coords = "mcs", view = "xy", vars;
   std::vector<std::string> inits;
-  int decimals = -1;  // --decimals: -1 the shortest round-trip text
+  std::vector<std::string> path;  // --path: where subprograms and cycles are searched
+  int decimals = -1;              // --decimals: -1 the shortest round-trip text
 };
 
 std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
@@ -130,6 +131,7 @@ int run(const Args& a, const ncoffset::RunOptions& options) {
     return 1;
   }
   ncoffset::Channel channel(options);
+  channel.setSearchPath({a.path.begin(), a.path.end()});
   // The writer flushes its last lines into the stream when it goes.
   int status = runAll(a, channel, *makeWriter(a, out.stream(), channel));
   bool ok = out.close(error);
@@ -159,6 +161,11 @@ int main(int argc, char** argv) {
   app.add_option("PROGRAM", a.program, "part program (.MPF)")->required();
   app.add_option("--init", a.inits, "init file run before PROGRAM (repeatable, in order)")
       ->allow_extra_args(false);  // one file per --init, so `--init A PROGRAM` works
+  app.add_option("--path", a.path,
+                 "directory or text archive searched for subprograms and cycles after the "
+                 "program's directory (repeatable, in order)")
+      ->allow_extra_args(false)
+      ->check(CLI::ExistingPath);
   app.add_option("-o,--output", a.output, "output file (default: stdout)");
   app.add_option("--format", a.format,
                  "csv | jsonl | svg | html | mpf (default: from the output's extension, else csv)")

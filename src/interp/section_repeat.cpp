@@ -1,0 +1,153 @@
+// Program section repetition (PM-JP "Program section repetition": REPEAT, REPEATB, ENDLABEL,
+// P): a section of the current program runs P times as a program level of its own, then the
+// program continues after the REPEAT line. Decisions and their sources: docs/language.md
+// "Program section repetition".
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interp/interpreter.hpp"
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::interp {
+
+using lang::TextPos;
+
+// --- ProgramFlow ----------------------------------------------------------------------------
+
+// The current level reached its watched line: the end of its archived program or of its
+// section. Rare (once per pass), so off the per-block path.
+bool ProgramFlow::watchedLine(ProgramLevel& lvl, std::string_view& text) {
+  if (!lvl.watch_inclusive || lvl.ending) return false;
+  // The end line of the section still runs; the read after it ends the pass.
+  lvl.ending = true;
+  bool more = lang::nextLine(lvl.program->source->text(), lvl.pos, text);
+  lvl.watch = lvl.pos.offset;
+  return more;
+}
+
+void ProgramFlow::repeatSection(const Section& s, long long count) {
+  if (static_cast<int>(levels_.size()) >= limits_.max_program_levels)
+    raise(AlarmNumber::SubprogramDepth,
+          fmt::format("maximum subprogram level exceeded: {} program levels (--max-program-levels; "
+                      "each program section repetition takes one)",
+                      limits_.max_program_levels));
+  if (count < 1 || count > 9999)
+    raise(AlarmNumber::ValueRange,
+          fmt::format("value range exceeded: P={} (pass count 1..9999)", count));
+  ProgramLevel lvl;
+  lvl.program = levels_.back().program;
+  lvl.pos = s.start;
+  lvl.repeat_left = count - 1;
+  lvl.defs_allowed = false;
+  lvl.section = true;
+  lvl.section_start = s.start;
+  lvl.section_end = s.end;
+  lvl.watch = s.end;
+  lvl.watch_inclusive = s.inclusive;
+  levels_.push_back(lvl);
+}
+
+bool ProgramFlow::inMainProgram() const {
+  size_t k = levels_.size() - 1;
+  while (k > 0 && levels_[k].section) --k;
+  return k == 0;
+}
+
+const std::vector<TextPos>* ProgramFlow::labelLines(std::string_view label) const {
+  return levels_.back().program->index->labels(label);
+}
+
+// --- Interpreter ----------------------------------------------------------------------------
+
+namespace {
+
+// The nearest line before `here`, else (both ways) the nearest after it.
+const TextPos* nearest(const std::vector<TextPos>* lines, size_t here, bool forward_too) {
+  if (!lines) return nullptr;
+  for (auto r = lines->rbegin(); r != lines->rend(); ++r)
+    if (r->offset < here) return &*r;
+  if (forward_too)
+    for (const auto& p : *lines)
+      if (p.offset > here) return &p;
+  return nullptr;
+}
+
+// The first line of `lines` at or after `from` (and before `before`).
+const TextPos* firstFrom(const std::vector<TextPos>* lines, size_t from, size_t before) {
+  if (!lines) return nullptr;
+  for (const auto& p : *lines)
+    if (p.offset >= from && p.offset < before) return &p;
+  return nullptr;
+}
+
+}  // namespace
+
+// REPEATB L [P=n]; REPEAT L [P=n]; REPEAT L1 L2 [P=n] (L2 may be ENDLABEL).
+void Interpreter::repeatSection(const lang::Stmt& st, bool& jumped) {
+  const lang::Block& b = block_;
+  const size_t here = line_pos_.offset;
+  const bool single_block = st.name == "REPEATB";
+  const bool two_labels = st.expr2 >= 0;
+  const std::string_view start_name = b.node(st.target).text;
+  // REPEATB and REPEAT A B look for the start towards the program start first, then towards its
+  // end; REPEAT A repeats what stands between A and itself, so A must come before it.
+  const TextPos* start = nearest(flow_.labelLines(start_name), here, single_block || two_labels);
+  if (!start)
+    raise(AlarmNumber::JumpNotFound,
+          fmt::format("jump destination {} not found ({} search for the start of the repeated "
+                      "section)",
+                      start_name,
+                      single_block || two_labels ? "backward, then forward" : "backward"));
+  Section s;
+  s.start = *start;
+  if (single_block) {
+    s.end = start->offset;
+    s.inclusive = true;
+  } else if (two_labels) {
+    const std::string_view end_name = b.node(st.expr2).text;
+    const TextPos* end = firstFrom(flow_.labelLines(end_name), start->offset, kNoOffset);
+    if (!end)
+      raise(AlarmNumber::JumpNotFound,
+            fmt::format("jump destination {} not found (the end of the repeated section is "
+                        "searched forward from {} on line {})",
+                        end_name, start_name, start->line));
+    s.end = end->offset;
+    s.inclusive = true;
+  } else if (const TextPos* end = firstFrom(flow_.labelLines("ENDLABEL"), start->offset, here)) {
+    s.end = end->offset;  // an ENDLABEL between the start and the REPEAT ends the section
+    s.inclusive = true;
+  } else {
+    s.end = here;  // the section ends before the REPEAT line
+  }
+  long long count = 1;
+  if (st.expr >= 0) {
+    double p = lang::toNumber(eval_.eval(b, st.expr), "pass count P");
+    if (p != std::floor(p))
+      raise(AlarmNumber::ValueRange,
+            fmt::format("value range exceeded: P={} (the pass count is an integer)", p));
+    count = std::fabs(p) > 1e9 ? 0 : static_cast<long long>(p);
+  }
+  finishBlock();
+  if (ended_) return;
+  flow_.repeatSection(s, count);
+  jumped = true;
+}
+
+// M17/RET and M2/M30 (PM-JP "Program section repetition": M17 or RET in a repeated section ends
+// the repetition, the program continues after the REPEAT line).
+void Interpreter::endWord(bool program_end) {
+  if (flow_.level().section) {
+    if (program_end && flow_.inMainProgram())
+      endProgram();
+    else
+      flow_.abortSection();
+    return;
+  }
+  if (flow_.depth() > 1)
+    returnFromSubprogram();  // M2/M30 in a subprogram act like M17
+  else
+    endProgram();
+}
+
+}  // namespace ncoffset::interp
