@@ -128,7 +128,16 @@ bool Parser::literalWord(std::string_view name, int col) {
   const double v = scanNumber(is_int);
   size_t j = i_;
   while (j < s_.size() && s_[j] == ' ') ++j;
-  const bool ends = j == s_.size() || s_[j] == ';' || (j > i_ && isAlpha(s_[j]));
+  bool ends = j == s_.size() || s_[j] == ';' || (j > i_ && isAlpha(s_[j]));
+  if (ends && j < s_.size() && isAlpha(s_[j])) {
+    // `X=7 DIV 3`, `CR=2 MOD 1`: an operator word continues the value (PM-NC p444), only a
+    // name that is no operator starts the next word.
+    const size_t after = i_;
+    i_ = j;
+    for (std::string_view w : {"DIV", "MOD", "AND", "OR", "XOR", "B_AND", "B_OR", "B_XOR"})
+      if (wordAhead(w)) ends = false;
+    i_ = after;
+  }
   if (!ends) {
     i_ = save;
     return false;
