@@ -232,7 +232,8 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
   if (name == "SPOS" || name == "SPOSA") {
     value();
     return;
-  }  // spindle positioning
+  }                                                          // spindle positioning
+  if (predefinedAssign(name, Value::real(value()))) return;  // docs/names.md
   notModelled(fmt::format("address {}=", name),
               "this address changes the path and is not modelled");
 }

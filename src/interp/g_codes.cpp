@@ -234,6 +234,7 @@ void Interpreter::gNotModelled(int g) {
 
 void Interpreter::gCode(int g) {
   if (gMotionPlaneFrame(g) || gCompensation(g) || gUnitsAndFeed(g)) return;
+  if (g == 62 || g == 621) return;  // corner deceleration (group 57): speed, not path
   gNotModelled(g);
   if (g >= 505 && g <= 599) {
     modal_.frame_select = g;
@@ -306,7 +307,8 @@ void Interpreter::namedWord(const Stmt& st) {
                "TRAORI", "TRANSMIT", "TRACYL",  "TRAANG",  "ROTS",    "AROTS", "CROTS",  "MOVT",
                "INVCW",  "INVCCW",   "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL",  "PCALL",  "MCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
-  if (!words_.call.empty())  // every word is read: a second call would drop the first name
+  if (predefinedWord(w)) return;  // docs/names.md: (a)/(b) accepted, (c) alarm 99010
+  if (!words_.call.empty())       // every word is read: a second call would drop the first name
     raise(AlarmNumber::NameNotDefined,
           fmt::format("name {} not defined (a block calls one subprogram; {} follows)", words_.call,
                       w));

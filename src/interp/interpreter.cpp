@@ -251,10 +251,15 @@ void Interpreter::define(const lang::Decl& d) {
                                 d.type, d.string_length, name);
       std::fill(v.data.begin(), v.data.end(), x);
     } else {
-      for (int k = 0; k < d.init_count; ++k)
+      for (int k = 0; k < d.init_count; ++k) {
+        const int arg = block_.args[static_cast<size_t>(d.init_first + k)];
+        const lang::Node& n = block_.node(arg);
+        // SET(0,,,9): an omitted value leaves its element at the type's default (PM-JP
+        // "Definition and initialization of array variables").
+        if (n.kind == lang::NodeKind::Name && n.text.empty()) continue;
         v.data[static_cast<size_t>(k)] =
-            convertForStore(eval_.eval(block_, block_.args[static_cast<size_t>(d.init_first + k)]),
-                            d.type, d.string_length, name);
+            convertForStore(eval_.eval(block_, arg), d.type, d.string_length, name);
+      }
     }
   }
   for (const auto& x : v.data) VariableStore::checkLimits(v, x, name);

@@ -114,6 +114,23 @@ class Interpreter final : public lang::Environment {
   Frame* frameByName(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                      bool& whole);
 
+  // --- predefined names without code of their own (predefined_calls.cpp, docs/names.md) ---
+  // A bare name (SOFT, COMPCAD, CUT2DF): true when accepted, alarm 99010 for a (c) name, false
+  // when the table does not know it (a subprogram call).
+  bool predefinedWord(std::string_view name);
+  // NAME(args) (WAITM(..), SETAL(..), ISVAR(..), CYCLE81(..)): false when unknown.
+  bool predefinedCall(std::string_view name, std::span<const lang::Value> args, lang::Value& out);
+  // NAME=value, NAME[i]=value (ADIS=0.5, ACC[X]=80, DL=0): false when unknown.
+  bool predefinedAssign(std::string_view name, const lang::Value& v);
+  // Reading a (c) name: alarm 99010 (false when the table does not know it).
+  bool predefinedRead(std::string_view name);
+  lang::Value isVar(std::span<const lang::Value> args);
+  // --- position and state reads (state_variables.cpp): $AA_IW, $AA_IM, $P_GG, $P_F ---
+  bool readState(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                 lang::Value& out);
+  void mainRunStop(std::string_view name);
+  int gGroupIndex(int group) const;
+
   RunOptions options_;
   core::Stage& first_;
   double feed_before_ = 0;             // the modal feed before the current block

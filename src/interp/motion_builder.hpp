@@ -36,6 +36,9 @@ class MotionBuilder {
   // The last programmed point in the WCS ($P_EP) and the tool tip in the BCS.
   Vec3 wcs() const { return wcs_; }
   Vec3 bcs() const { return bcs_; }
+  // The tool's position in the MCS where the last block left it ($AA_IM): the BCS point plus
+  // the tool length as the axes have taken it up.
+  Vec3 mcs() const { return bcs_ + applied_offset_; }
   // $P_APR, $P_AEP, $P_APDV as the smooth approach fed them back.
   const core::ApproachPoints& approachPoints() const { return approach_points_; }
 

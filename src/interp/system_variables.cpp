@@ -90,6 +90,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   }
   if (name.empty() || name[0] != '$') return false;
   if (tools_.read(name, idx, indexed, modal_.plane, out)) return true;
+  if (readState(name, idx, indexed, out)) return true;
   if (name == "$P_APR" || name == "$P_AEP") {
     // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
     if (!indexed || idx.size() != 1)
@@ -127,7 +128,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   }
   bool whole;
   Frame* f = frameByName(name, idx, indexed, whole);
-  if (!f) return false;
+  if (!f) return predefinedRead(name);  // (c) names: 99010; unknown: false (12550)
   if (whole) {
     out = frameValue(*f);
     return true;
@@ -162,6 +163,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
   bool whole;
   Frame* f = frameByName(name, idx, indexed, whole);
   if (!f) {
+    if (predefinedAssign(name, v)) return;  // docs/names.md: ADIS=, ACC[X]=, DL=0, ...
     if (!name.empty() && name[0] == '$')
       raise(AlarmNumber::NameNotDefined,
             fmt::format("name {} not defined or option/function not available", name));
@@ -241,6 +243,7 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
   if (name == "GETTCOR" || name == "SETTCOR")
     raise(AlarmNumber::NotModelled,
           fmt::format("{} (tool environments) is not modelled by ncoffset", name));
+  if (Value out; predefinedCall(name, args, out)) return out;
   if (programExists(name))
     raise(AlarmNumber::NotModelled,
           fmt::format("subprogram call {}(...) with parameters is not modelled by ncoffset", name));

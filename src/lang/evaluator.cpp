@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lang/string_functions.hpp"
 #include "ncoffset/alarm.hpp"
 #include "ncoffset/geometry.hpp"
 
@@ -410,7 +411,7 @@ bool arithmetic(const FunctionArgs& f, Value& out) {
 Value Evaluator::function(std::string_view name, std::span<const Value> args) {
   const FunctionArgs f{name, args};
   Value v;
-  if (trigonometric(f, v) || arithmetic(f, v)) return v;
+  if (trigonometric(f, v) || arithmetic(f, v) || stringFunction(name, args, v)) return v;
   return env_.call(name, args);
 }
 

@@ -8,6 +8,21 @@
 
 namespace ncoffset::lang {
 
+namespace {
+
+// The operator words (DIV, MOD, AND, ...) at `j`, not followed by a name character. A call of
+// its own, not inlined: literalWord runs for every `CR=10` word of a block and stays small.
+[[gnu::noinline]] bool operatorWordAt(std::string_view s, size_t j) {
+  for (std::string_view w : {"DIV", "MOD", "AND", "OR", "XOR", "B_AND", "B_OR", "B_XOR"}) {
+    if (s.compare(j, w.size(), w) == 0 &&
+        (j + w.size() >= s.size() || !isIdentChar(s[j + w.size()])))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 void Parser::statement() {
   int col = column();
   char c = peek();
@@ -128,7 +143,10 @@ bool Parser::literalWord(std::string_view name, int col) {
   const double v = scanNumber(is_int);
   size_t j = i_;
   while (j < s_.size() && s_[j] == ' ') ++j;
-  const bool ends = j == s_.size() || s_[j] == ';' || (j > i_ && isAlpha(s_[j]));
+  // `X=7 DIV 3`, `CR=2 MOD 1`: an operator word continues the value (PM-NC p444); only a name
+  // that is no operator starts the next word.
+  const bool ends =
+      j == s_.size() || s_[j] == ';' || (j > i_ && isAlpha(s_[j]) && !operatorWordAt(s_, j));
   if (!ends) {
     i_ = save;
     return false;

@@ -1,0 +1,100 @@
+// The predefined names without code of their own (interp/predefined_names.hpp, docs/names.md):
+// what a bare name, a call, an assignment or a read of one does, SETAL (PM-JP "Programming
+// alarms") and ISVAR (PM-JP "Check availability of a variable").
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interp/interpreter.hpp"
+#include "interp/predefined_names.hpp"
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::interp {
+
+using lang::Value;
+
+namespace {
+
+// SETAL(number[, text]): the cycle alarms are 60000..69999 (PM-JP "SETAL"); the program stops
+// with the alarm, as on the control (its reaction is the cycle alarm's: NC stop).
+[[noreturn]] void setAlarm(std::span<const Value> args) {
+  if (args.empty() || args.size() > 2)
+    raise(AlarmNumber::WrongCallParams, "SETAL takes an alarm number and an optional text");
+  const double n = lang::toNumber(args[0], "alarm number");
+  if (!(n >= 60000 && n <= 69999) || n != std::floor(n))
+    raise(AlarmNumber::ValueRange,
+          fmt::format("value range exceeded: SETAL({}) (cycle alarms 60000..69999)", n));
+  std::string text = fmt::format("cycle alarm {} set by SETAL", static_cast<int>(n));
+  if (args.size() == 2 && args[1].type != lang::Type::Empty) text += ": " + lang::toText(args[1]);
+  throw AlarmError(static_cast<AlarmNumber>(static_cast<int>(n)), text);
+}
+
+}  // namespace
+
+bool Interpreter::predefinedWord(std::string_view name) {
+  const PredefinedName* p = findPredefinedName(name);
+  if (!p || (p->cycle && programExists(name))) return false;
+  if (p->cls == NameClass::NotModelled) notModelledName(*p, name);
+  if (name == "SETAL") raise(AlarmNumber::WrongCallParams, "SETAL needs an alarm number");
+  return true;
+}
+
+bool Interpreter::predefinedCall(std::string_view name, std::span<const Value> args, Value& out) {
+  if (name == "ISVAR") {
+    out = isVar(args);
+    return true;
+  }
+  if (name == "SETAL") setAlarm(args);
+  const PredefinedName* p = findPredefinedName(name);
+  if (!p || (p->cycle && programExists(name))) return false;
+  if (p->cls == NameClass::NotModelled) notModelledName(*p, name);
+  out = Value::empty();
+  return true;
+}
+
+bool Interpreter::predefinedAssign(std::string_view name, const Value& v) {
+  const PredefinedName* p = findPredefinedName(name);
+  if (!p) return false;
+  if (p->cls == NameClass::NotModelled &&
+      !(p->zero_accepted && v.isNumeric() && std::fabs(v.num) < 1e-12))
+    notModelledName(*p, fmt::format("{}=", name));
+  if (p->cls != NameClass::NotModelled && !v.isNumeric() && v.type != lang::Type::Empty &&
+      !v.isText())
+    raise(AlarmNumber::TypeMismatch,
+          fmt::format("operation not compatible with data type: {} takes a value", name));
+  return true;
+}
+
+bool Interpreter::predefinedRead(std::string_view name) {
+  const PredefinedName* p = findPredefinedName(name);
+  if (!p || p->cls != NameClass::NotModelled) return false;
+  notModelledName(*p, name);
+}
+
+// ISVAR("name"): TRUE when the name is a variable the channel knows: a user variable, an R
+// parameter, machine or setting data, or a system variable ncoffset models. Indices written
+// with the name ("$P_UIFR[1]") are not checked.
+Value Interpreter::isVar(std::span<const Value> args) {
+  if (args.size() != 1 || !args[0].isText())
+    raise(AlarmNumber::WrongCallParams, "ISVAR takes one STRING (the variable's name)");
+  std::string name = args[0].str;
+  for (char& c : name)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  if (const size_t bracket = name.find('['); bracket != std::string::npos) name.resize(bracket);
+  if (name == "$AA_IW" || name == "$AA_IM") return Value::boolean(true);  // no implicit stop
+  if (name.size() >= 2 && name.size() <= 10 && name[0] == 'R' &&
+      name.find_first_not_of("0123456789", 1) == std::string::npos)
+    return Value::boolean(std::stod(name.substr(1)) < static_cast<double>(vars_.rCount()));
+  if (vars_.find(name) || data_.find(name) >= 0) return Value::boolean(true);
+  if (name.empty() || name[0] != '$') return Value::boolean(false);
+  // A system variable: known when reading it is no 12550 (an index alarm means it exists).
+  try {
+    Value v;
+    Value index = Value::symbol("X");
+    return Value::boolean(read(name, {}, false, v) || read(name, {&index, 1}, true, v));
+  } catch (const AlarmError& e) {
+    return Value::boolean(e.alarm() != AlarmNumber::NameNotDefined);
+  }
+}
+
+}  // namespace ncoffset::interp
