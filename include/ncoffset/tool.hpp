@@ -75,6 +75,13 @@ Vec3 toolOrientation(const EdgeData& e, const ToolSettings& s, Plane plane,
 // axes of L1 and L2 (X and Z in G18 with the standard assignment). SL 9 and 0: P = S.
 std::array<double, 2> tipFromEdgeCentre(int sl, double r);
 
+// The vector P - S of the active edge in the basic coordinate system
+// (docs/cutting-edge-positions.md): tipFromEdgeCentre(SL, r) on the axes L1 and L2 are assigned to
+// in `plane` (with the signs of SD42940/SD42950, like the lengths). Zero for tool types outside
+// 400..599 and for SL 0 and 9. Radius compensation adds it where S runs on the equidistant, so that
+// the lengths refer to P.
+Vec3 tipVector(const EdgeData& e, const ToolSettings& s, Plane plane, double r);
+
 // LENTOAX (W1 2.11, details §1): _AXIND and _MATRIX for the active edge in the coordinate
 // system `coord` (M/B/W/K/T). `frame_linear` is the linear part of WCS -> BCS.
 struct LentoaxResult {

@@ -4,12 +4,20 @@
 // another stage.
 #pragma once
 
+#include <cstdint>
+
 #include "core/block_frame.hpp"
 #include "core/compensation.hpp"
 #include "ncoffset/geometry.hpp"
 #include "ncoffset/path.hpp"
 
 namespace ncoffset::core {
+
+// Which points of a motion radius compensation put on the path of the cutting edge centre S of
+// a turning tool, where the placement adds the vector P - S (docs/cutting-edge-positions.md):
+// none for a block without compensation, both for the compensated contour, the start only for
+// the retraction line, the end only for the approach line.
+enum TipAt : std::uint8_t { kTipNone = 0, kTipStart = 1, kTipEnd = 2, kTipBoth = 3 };
 
 struct MotionBlock {
   Motion motion = Motion::G1;
@@ -20,8 +28,11 @@ struct MotionBlock {
   Plane plane = Plane::G17;
   TrcSettings trc;  // radius compensation of this block
   int turns = 0;
-  BlockFrame frame;  // WCS -> BCS for this block (none with G53/G153/SUPA and programmed MCS)
-  Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
+  BlockFrame frame;      // WCS -> BCS for this block (none with G53/G153/SUPA and programmed MCS)
+  Vec3 tool_offset;      // BCS vector from tool tip to carrier reference point
+  Vec3 tip;              // BCS vector P - S of a turning tool (frame mirroring applied)
+  bool has_tip = false;  // the active edge has P != S (turning tool SL 1..8)
+  std::uint8_t tip_at = kTipNone;  // set by radius compensation only
   double feed = 0;
   bool has_feed = false;
   int line = 0;
@@ -37,10 +48,11 @@ struct Geometry {
   Vec3 start, end, centre;
   int applicate;
   int turns;
+  std::uint8_t tip_at = kTipNone;
 };
 
 inline Geometry geometryOf(const MotionBlock& m) {
-  return {m.motion, m.start, m.end, m.centre, m.applicate, m.turns};
+  return {m.motion, m.start, m.end, m.centre, m.applicate, m.turns, m.tip_at};
 }
 
 // A copy of `like` with the geometry `g`.
@@ -52,6 +64,7 @@ inline MotionBlock withGeometry(const MotionBlock& like, const Geometry& g) {
   b.centre = g.centre;
   b.applicate = g.applicate;
   b.turns = g.turns;
+  b.tip_at = g.tip_at;
   return b;
 }
 

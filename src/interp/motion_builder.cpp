@@ -174,6 +174,26 @@ NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& 
   t.curve_insert_limit = data_.get(md_insert_limit_);
   t.max_dummy_blocks = static_cast<int>(data_.get(md_dummy_blocks_));
   t.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
+  m_.has_tip = tools_.hasTip();  // false for every milling tool: nothing more per block
+  m_.tip_at = core::kTipNone;
+  if (m_.has_tip) m_.tip = tipVector(modal.plane);
+}
+
+Vec3 MotionBuilder::tipVector(Plane plane) {
+  // P - S of the edge (tool::ToolSelection::tipVector) with the components on the axes the
+  // block's frame mirrors inverted: mirroring a plane axis mirrors the effective cutting edge
+  // position (PM-NC 12/2019 p746, "D13 with SL3" becomes SL4 under mirrored Z; docs/cutting-edge-
+  // positions.md). The mirror flags are read once per frame state.
+  Vec3 tip = tools_.tipVector(plane);
+  if (suppressed_ || frames_.isIdentity()) return tip;
+  const std::uint64_t state = frames_.blockFrame().state();
+  if (state != mirror_state_) {
+    mirrored_ = frames_.active().mirror;
+    mirror_state_ = state;
+  }
+  for (int i = 0; i < 3; ++i)
+    if (mirrored_[static_cast<size_t>(i)]) tip[i] = -tip[i];
+  return tip;
 }
 
 NCOFFSET_INLINE_STEP void MotionBuilder::checkRange(bool plain) const {

@@ -51,6 +51,8 @@ class MotionBuilder {
   // when the block moves nowhere.
   bool takeUpLength(const BlockWords& w, const ModalState& modal, bool plain, const Vec3& target);
   void compensationSettings(const ModalState& modal);
+  // The edge's P - S under the block's frame (turning tools only).
+  Vec3 tipVector(Plane plane);
   void checkRange(bool plain) const;
   void sarRequest(const BlockWords& w, const ModalState& modal, const BlockContext& at);
   Vec3 toBcs(bool plain, const Vec3& p) const { return plain ? p : frame().apply(p); }
@@ -64,9 +66,11 @@ class MotionBuilder {
   // Machine data read per block, looked up once.
   int md_circle_const_, md_circle_factor_, md_corner_limit_, md_insert_limit_, md_dummy_blocks_,
       md_check_blocks_, md_sar_dummy_blocks_;
-  core::MotionBlock m_;      // the one block, reused: every member is set for each motion
-  bool suppressed_ = false;  // G53/G153/SUPA in the block being built
-  Vec3 applied_offset_;      // BCS length vector as taken up axis by axis by linear blocks
+  core::MotionBlock m_;             // the one block, reused: every member is set for each motion
+  bool suppressed_ = false;         // G53/G153/SUPA in the block being built
+  Vec3 applied_offset_;             // BCS length vector as taken up axis by axis by linear blocks
+  std::uint64_t mirror_state_ = 0;  // the frame state `mirrored_` belongs to
+  std::array<bool, 3> mirrored_{};  // the axes that frame mirrors
   Vec3 wcs_;
   Vec3 bcs_;
   core::ApproachPoints approach_points_;

@@ -50,7 +50,21 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
       if (flip) s.motion = g.motion == Motion::G2 ? Motion::G3 : Motion::G2;
     }
   }
+  if (g.tip_at != core::kTipNone) addTip(s, m, g);  // turning tools with TRC only
   return s;
+}
+
+void Placement::addTip(Segment& s, const MotionBlock& m, const Geometry& g) const {
+  // The lengths refer to the tool tip P; radius compensation guided the cutting edge centre S,
+  // so the points it made get P - S (docs/cutting-edge-positions.md). The vector is fixed in
+  // the BCS; in WCS coordinates it is the frame's inverse image.
+  Vec3 tip = m.tip;
+  if (coords_ == CoordSystem::WCS && !m.frame.isIdentity()) tip = m.frame.linear().inverse() * tip;
+  if (g.tip_at & core::kTipStart) s.start = s.start + tip;
+  if (g.tip_at & core::kTipEnd) {
+    s.end = s.end + tip;
+    if (g.motion == Motion::G2 || g.motion == Motion::G3) s.centre = s.centre + tip;
+  }
 }
 
 namespace {

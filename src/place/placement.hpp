@@ -33,6 +33,8 @@ class Placement final : public core::Stage {
  private:
   void programmedSegment(const core::MotionBlock& m);
   Segment toSegment(const core::MotionBlock& m, const core::Geometry& g) const;
+  // P - S at the points of `g` on the path of S (core::TipAt).
+  void addTip(Segment& s, const core::MotionBlock& m, const core::Geometry& g) const;
 
   PathSink& sink_;
   CoordSystem coords_;

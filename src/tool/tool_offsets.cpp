@@ -101,6 +101,16 @@ std::array<double, 2> tipFromEdgeCentre(int sl, double r) {
   return {kDir[sl][0] * r, kDir[sl][1] * r};
 }
 
+Vec3 tipVector(const EdgeData& e, const ToolSettings& s, Plane plane, double r) {
+  Vec3 v;
+  // W1 "cutting edge position": relevant for turning and grinding tools only.
+  if (!isTurningOrGrindingType(e.type())) return v;
+  const std::array<double, 2> d = tipFromEdgeCentre(e.cuttingEdgePosition(), r);
+  const LengthAssignment a = assignLengths(e.type(), plane, s.length_const, s.length_type);
+  for (size_t k = 0; k < 2; ++k) v[a.axis[k]] += a.sign[k] * d[k];
+  return v;
+}
+
 LentoaxResult lentoax(const EdgeData& e, const ToolSettings& s, Plane plane,
                       const std::array<bool, 3>& mirrored, const Mat3& frame_linear,
                       const std::string& coord_in) {

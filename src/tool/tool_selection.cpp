@@ -64,17 +64,30 @@ void ToolSelection::selectEdge(int d, const SelectionContext& ctx) {
   edge_.settings = ctx.settings;
   edge_.mirrored = ctx.mirrored;
   edge_.radius = effectiveLengths(edge_.data, edge_.settings).radius;
+  const int sl = edge_.data.cuttingEdgePosition();
+  edge_.has_tip =
+      isTurningOrGrindingType(edge_.data.type()) && sl >= 1 && sl <= 8 && edge_.radius != 0.0;
   edge_.offset_cached = false;
+}
+
+void ToolSelection::cache(Plane plane) const {
+  if (edge_.offset_cached && edge_.cached_plane == plane) return;
+  edge_.cached_offset = ncoffset::lengthVector(edge_.data, edge_.settings, plane, edge_.mirrored);
+  edge_.cached_tip = ncoffset::tipVector(edge_.data, edge_.settings, plane, edge_.radius);
+  edge_.cached_plane = plane;
+  edge_.offset_cached = true;
 }
 
 Vec3 ToolSelection::lengthVector(Plane plane) const {
   if (!edge_.valid) return {};
-  if (!edge_.offset_cached || edge_.cached_plane != plane) {
-    edge_.cached_offset = ncoffset::lengthVector(edge_.data, edge_.settings, plane, edge_.mirrored);
-    edge_.cached_plane = plane;
-    edge_.offset_cached = true;
-  }
+  cache(plane);
   return edge_.cached_offset;
+}
+
+Vec3 ToolSelection::tipVector(Plane plane) const {
+  if (!edge_.has_tip) return {};
+  cache(plane);
+  return edge_.cached_tip;
 }
 
 EffectiveLengths ToolSelection::lengths() const {

@@ -51,6 +51,11 @@ class ToolSelection {
   // The BCS vector from the tool tip to the carrier reference point in `plane` (zero without
   // an edge), computed once per selection and plane.
   Vec3 lengthVector(Plane plane) const;
+  // The BCS vector P - S of a turning or grinding edge with SL 1..8 in `plane` (zero otherwise;
+  // docs/cutting-edge-positions.md), computed with the length vector, once per selection and
+  // plane. `hasTip()`: the active edge has one (false for every milling tool).
+  Vec3 tipVector(Plane plane) const;
+  bool hasTip() const { return edge_.has_tip; }
   // $P_TOOLL / $P_TOOLR: the effective lengths (zero without an edge).
   EffectiveLengths lengths() const;
   // $P_TOOLO: the unit orientation (without an edge the plane's applicate).
@@ -73,6 +78,8 @@ class ToolSelection {
  private:
   void changeTool(int t, bool edge_programmed, const SelectionContext& ctx);
   void selectEdge(int d, const SelectionContext& ctx);
+  // Recomputes the cached length and tip vectors for `plane` when the plane changed.
+  void cache(Plane plane) const;
 
   ToolStore tools_;
   size_t max_edges_;
@@ -85,11 +92,13 @@ class ToolSelection {
     EdgeData data;
     ToolSettings settings;
     std::array<bool, 3> mirrored{false, false, false};
-    double radius = 0;  // effective radius (edge + wear), fixed with the snapshot
+    double radius = 0;     // effective radius (edge + wear), fixed with the snapshot
+    bool has_tip = false;  // type 400..599 with SL 1..8 and a radius: P != S
     // lengthVector() for `cached_plane` (computed once per edge and plane, not per block).
     mutable bool offset_cached = false;
     mutable Plane cached_plane = Plane::G17;
     mutable Vec3 cached_offset;
+    mutable Vec3 cached_tip;  // tipVector() for `cached_plane`
   } edge_;
 };
 

@@ -131,7 +131,7 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     retract.p0 = fin.compensated.p1;
   }
   flushAll();
-  emit(toBlock(m, retract));
+  emit(detail::keepTipAt(toBlock(m, retract), core::kTipStart));
   state_ = State::Off;
 }
 
@@ -203,7 +203,7 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
       last.compensated.p1 = best->p;
       line.p0 = best->p;
       flushAll();
-      emit(toBlock(m, line));
+      emit(detail::keepTipAt(toBlock(m, line), core::kTipStart));
       state_ = State::Off;
       return;
     }
@@ -214,7 +214,7 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
              m.start[pa.applicate]);
   flushAll();
   for (const MotionBlock& b : around) emit(b);
-  emit(toBlock(m, line));
+  emit(detail::keepTipAt(toBlock(m, line), core::kTipStart));
   state_ = State::Off;
 }
 

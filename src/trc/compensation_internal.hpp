@@ -8,15 +8,25 @@
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <limits>
 #include <string>
 
+#include "core/motion_block.hpp"
 #include "geom/tolerance.hpp"
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::trc::detail {
 
 namespace tol = geom::tol;
+
+// Block `b` with the tip vector P - S kept only at `keep` (core::TipAt): the approach line
+// starts where P stood, the retraction line ends where P is to stand (docs/cutting-edge-
+// positions.md).
+inline core::MotionBlock keepTipAt(core::MotionBlock b, std::uint8_t keep) {
+  b.tip_at = static_cast<std::uint8_t>(b.tip_at & keep);
+  return b;
+}
 
 // The index of a block that never comes (for checkOpen when the window is flushed).
 inline constexpr long kNoLaterBlock = std::numeric_limits<long>::max() / 2;

@@ -41,7 +41,15 @@ namespace {
 // The geometry of plane element `e` (program coordinates) as a motion of block `like`.
 NCOFFSET_INLINE_STEP core::Geometry planeGeometry(const MotionBlock& like, const Element& e) {
   PlaneAxes pa = planeAxes(like.plane);
-  core::Geometry g{like.motion, like.start, like.end, like.centre, like.applicate, like.turns};
+  // Every point radius compensation makes lies on the path of S (the approach and retraction
+  // lines clear their programmed end: approach_retraction.cpp).
+  core::Geometry g{like.motion,
+                   like.start,
+                   like.end,
+                   like.centre,
+                   like.applicate,
+                   like.turns,
+                   like.has_tip ? core::kTipBoth : core::kTipNone};
   g.start[pa.abscissa] = e.p0.a;
   g.start[pa.ordinate] = e.p0.o;
   g.end[pa.abscissa] = e.p1.a;
@@ -158,7 +166,11 @@ void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
 
 void RadiusCompensation::emitPiece(const Piece& p) {
   for (const MotionBlock& t : p.transition) emit(t);
-  out_.element(p.block, geometry(p.block, p.compensated));  // no copy of the block
+  core::Geometry g = geometry(p.block, p.compensated);
+  if (p.approach)
+    g.tip_at = static_cast<std::uint8_t>(g.tip_at &
+                                         core::kTipEnd);  // the approach line starts where P stood
+  out_.element(p.block, g);                               // no copy of the block
   for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
 }
 

@@ -177,7 +177,7 @@ void RadiusCompensation::preprocessorStop(bool alarm) {
     Element approach;
     approach.p0 = anchor.programmed.p0;
     approach.p1 = anchor.compensated.p1;
-    emit(toBlock(selection_, approach));
+    emit(detail::keepTipAt(toBlock(selection_, approach), core::kTipEnd));
     for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
     waiting_.clear();
     state_ = State::On;
@@ -202,7 +202,7 @@ void RadiusCompensation::flush() {
     Element approach;
     approach.p0 = only.programmed.p0;
     approach.p1 = only.compensated.p1;
-    emit(toBlock(selection_, approach));
+    emit(detail::keepTipAt(toBlock(selection_, approach), core::kTipEnd));
     for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
   } else if (state_ == State::On) {
     flushAll();

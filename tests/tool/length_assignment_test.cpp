@@ -239,5 +239,46 @@ TEST(CuttingEdgePosition, TipFromCentreTable) {
   }
 }
 
+TEST(CuttingEdgePosition, TipVectorOnTheAxesOfL1AndL2) {
+  // docs/cutting-edge-positions.md: P - S along the axes of L1 and L2 in the plane.
+  EdgeData e;
+  e.dp[1] = 500;
+  e.dp[2] = 3;  // (-R along L1, -R along L2)
+  const ToolSettings s;
+  const Vec3 g18 = tipVector(e, s, Plane::G18, 0.8);  // L1 -> X, L2 -> Z
+  EXPECT_DOUBLE_EQ(g18.x, -0.8);
+  EXPECT_DOUBLE_EQ(g18.y, 0);
+  EXPECT_DOUBLE_EQ(g18.z, -0.8);
+  e.dp[2] = 1;
+  const Vec3 g17 = tipVector(e, s, Plane::G17, 0.8);  // L1 -> Y, L2 -> X
+  EXPECT_DOUBLE_EQ(g17.x, 0.8);
+  EXPECT_DOUBLE_EQ(g17.y, 0.8);
+  EXPECT_DOUBLE_EQ(g17.z, 0);
+  e.dp[2] = 6;
+  const Vec3 g19 = tipVector(e, s, Plane::G19, 0.8);  // L1 -> Z, L2 -> Y
+  EXPECT_DOUBLE_EQ(g19.x, 0);
+  EXPECT_DOUBLE_EQ(g19.y, 0);
+  EXPECT_DOUBLE_EQ(g19.z, 0.8);
+}
+
+TEST(CuttingEdgePosition, NoTipForSl9Sl0OrMillingTools) {
+  EdgeData e;
+  e.dp[1] = 500;
+  for (int sl : {0, 9}) {
+    e.dp[2] = sl;
+    const Vec3 v = tipVector(e, {}, Plane::G18, 0.8);
+    EXPECT_EQ(v.x, 0);
+    EXPECT_EQ(v.z, 0);
+  }
+  e.dp[1] = 120;  // an end mill: $TC_DP2 has no meaning
+  e.dp[2] = 3;
+  const Vec3 v = tipVector(e, {}, Plane::G18, 5);
+  EXPECT_EQ(v.x, 0);
+  EXPECT_EQ(v.y, 0);
+  EXPECT_EQ(v.z, 0);
+  e.dp[1] = 400;  // grinding tools have positions too (W1: types 400..599)
+  EXPECT_DOUBLE_EQ(tipVector(e, {}, Plane::G18, 1).x, -1);
+}
+
 }  // namespace
 }  // namespace ncoffset
