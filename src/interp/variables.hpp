@@ -16,6 +16,9 @@ struct UserVariable {
   int dims[2] = {0, 0};  // 0: scalar
   int string_length = 0;
   std::vector<lang::Value> data;  // one element for scalars, row-major for arrays
+  // A call-by-reference parameter bound to a whole variable of the caller (PROC .. VAR):
+  // VariableStore::find gives the caller's variable itself.
+  UserVariable* ref = nullptr;
   bool isArray() const { return dims[0] > 0; }
 };
 
