@@ -55,10 +55,14 @@ enum class AlarmNumber : int {
   TypeMismatch = 12150,       // operation not compatible with the data type
   ValueRange = 12160,         // value out of range
   AlreadyDefined = 12170,     // a name defined twice
+  ParamNotVariable = 12320,   // an expression given for a call-by-reference (VAR) parameter
+  ParamType = 12330,          // type (or array dimension) of a parameter incorrect
+  TooManyParams = 12340,      // more arguments than the subprogram has parameters
   UnknownGCode = 12470,       // unknown G function
   NameNotDefined = 12550,     // name not defined or option not available
   ControlNesting = 12640,     // invalid nesting of control structures
   ControlDepth = 12641,       // control structures nested too deep
+  DefaultParam = 14010,       // a VAR or AXIS parameter left out in a call
   ProgramNotFound = 14011,    // program not existing
   SubprogramDepth = 14012,    // maximum subprogram level exceeded
   WrongCallParams = 14020,    // wrong number or type of parameters in a call

@@ -302,10 +302,9 @@ void Interpreter::namedWord(const Stmt& st) {
                   "CFIN",    "TOWSTD", "TOWMCS",  "TOWWCS",  "TOWBCS", "TOWTCS", "TOWKCS", "DIAMOF",
                   "TRAFOOF", "SAVE",   "DISPLOF", "DISPLON", "WAITM",  "G64"}))
     return;  // no effect on the path
-  if (isOneOf(w,
-              {"CIP",    "CT",       "ASPLINE", "BSPLINE", "CSPLINE", "POLY",  "DIAMON", "DIAM90",
-               "TRAORI", "TRANSMIT", "TRACYL",  "TRAANG",  "ROTS",    "AROTS", "CROTS",  "MOVT",
-               "INVCW",  "INVCCW",   "OEMIPO1", "OEMIPO2", "EXTCALL", "CALL",  "PCALL",  "MCALL"}))
+  if (isOneOf(w, {"CIP",    "CT",     "ASPLINE",  "BSPLINE", "CSPLINE", "POLY",    "DIAMON",
+                  "DIAM90", "TRAORI", "TRANSMIT", "TRACYL",  "TRAANG",  "ROTS",    "AROTS",
+                  "CROTS",  "MOVT",   "INVCW",    "INVCCW",  "OEMIPO1", "OEMIPO2", "EXTCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
   if (predefinedWord(w)) return;  // docs/names.md: (a)/(b) accepted, (c) alarm 99010
   if (!words_.call.empty())       // every word is read: a second call would drop the first name

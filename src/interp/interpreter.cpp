@@ -81,6 +81,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   ended_ = false;
   flow_.begin(program);
   vars_.beginRun();
+  resetCalls();
   without_motion_ = 0;  // an init file's data blocks do not count against the program
   std::string_view text;
   const size_t max_len = options_.limits.max_line_length;
@@ -140,9 +141,10 @@ void Interpreter::executeBlock() {
   for (size_t i = 0; i < b.stmts.size() && !jumped; ++i) {
     const Stmt& st = b.stmts[i];
     column_ = st.column;  // where an alarm of this statement points
-    if (st.kind != StmtKind::Keyword || st.name != "DEF") {
-      if (st.kind != StmtKind::Keyword || st.name != "PROC") lvl.defs_allowed = false;
-    }
+    // The definition part: PROC, DEF and EXTERN (PM-JP "Subprogram technique").
+    if (st.kind != StmtKind::Keyword ||
+        (st.name != "DEF" && st.name != "PROC" && st.name != "EXTERN"))
+      lvl.defs_allowed = false;
     switch (st.kind) {
       case StmtKind::Word:
         collectWord(st);
@@ -154,6 +156,10 @@ void Interpreter::executeBlock() {
         namedWord(st);
         break;
       case StmtKind::ProcCall: {
+        if (isSubprogramName(st.name)) {  // NAME(args), L123(args): a subprogram call
+          collectCall(st.name, st.expr);
+          break;
+        }
         std::vector<Value> args;
         eval_.evalArgs(b, b.node(st.expr), args);
         call(st.name, args);
@@ -188,13 +194,7 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
     macros_.define(b.node(st.target).text, b.node(st.expr).text, init_file_);
     return;
   }
-  if (kw == "PROC") {
-    if (st.ext > 0)
-      raise(AlarmNumber::NotModelled,
-            "PROC with formal parameters is not modelled by ncoffset (subprograms without "
-            "parameters only)");
-    return;
-  }
+  if (callStatement(st)) return;          // PROC, EXTERN, MCALL, CALL, PCALL
   if (st.jump != lang::JumpKind::None) {  // GOTOF / GOTOB / GOTO / GOTOC
     jump(st, st.jump == lang::JumpKind::Gotoc);
     jumped = true;
@@ -214,6 +214,7 @@ void Interpreter::executeControl(const Stmt& st, size_t index, bool& jumped) {
 
 void Interpreter::endProgram() {
   ended_ = true;
+  mcall_ = {};  // the program end ends a modal call
 }
 
 void Interpreter::returnFromSubprogram() {
@@ -221,15 +222,11 @@ void Interpreter::returnFromSubprogram() {
     flow_.leave();  // a repeated section: the next pass, or back after the REPEAT line
     return;
   }
-  if (flow_.leave())
-    vars_.clearScope();  // the next pass starts without the variables of this one
-  else
-    vars_.popScope();
+  leaveSubprogram();  // subprogram_call.cpp: the next pass, or the return to the caller
 }
 
 void Interpreter::callSubprogram(std::string_view name, long long repeat) {
-  loading([&] { flow_.call(name, repeat); });
-  vars_.pushScope();
+  enterSubprogram(name, repeat, actualArguments(words_.call_args, false), false);
 }
 
 // --- variables ------------------------------------------------------------------------------

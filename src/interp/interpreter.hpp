@@ -16,6 +16,7 @@
 #include "interp/modal_state.hpp"
 #include "interp/motion_builder.hpp"
 #include "interp/program_flow.hpp"
+#include "interp/subprogram_call.hpp"
 #include "interp/variable_store.hpp"
 #include "interp/variables.hpp"
 #include "lang/block.hpp"
@@ -78,6 +79,28 @@ class Interpreter final : public lang::Environment {
   // section_repeat.cpp: REPEAT/REPEATB with labels; M17/RET/M2/M30 (`program_end`) by level.
   void repeatSection(const lang::Stmt& st, bool& jumped);
   void endWord(bool program_end);
+
+  // --- subprograms with parameters, MCALL, SAVE (subprogram_call.cpp, call_arguments.cpp) ---
+  // PROC, EXTERN, MCALL, CALL, PCALL; false for any other keyword.
+  bool callStatement(const lang::Stmt& st);
+  void procStatement(const lang::Stmt& st);
+  void modalCallStatement(const lang::Stmt& st);
+  void indirectCall(const lang::Stmt& st);
+  // NAME(args) names a subprogram (not a predefined procedure).
+  bool isSubprogramName(std::string_view name);
+  // The block calls `name` at its end with the arguments of the Call node `args_node`.
+  void collectCall(std::string_view name, int args_node);
+  std::vector<CallArg> actualArguments(int args_node, bool modal);
+  void enterSubprogram(std::string_view name, long long repeat, std::vector<CallArg> args,
+                       bool modal);
+  void leaveSubprogram();
+  const ProcSignature& signatureOf(const LoadedProgram& prog);
+  void bindParameters(CallFrame& frame);
+  void bindParameter(const FormalParameter& p, const CallArg& a, size_t position, CallFrame& frame);
+  void restoreSaved(const CallFrame& frame);
+  // After a block that moved a geometry axis: the active MCALL subprogram (PM-JP "MCALL").
+  void modalCallAfter(bool path_block);
+  void resetCalls();
   const lang::ControlLink& link() const { return flow_.link(line_pos_.offset); }
   void define(const lang::Decl& d);
   void assign(const lang::Stmt& st);
@@ -144,8 +167,14 @@ class Interpreter final : public lang::Environment {
   std::string call_name_;  // storage for an L<number> program name
 
   ProgramFlow flow_;
-  lang::MacroTable macros_;  // DEFINE .. AS (PM-JP "Macro technique")
-  std::string expanded_;     // the current block with its macros expanded
+  lang::MacroTable macros_;             // DEFINE .. AS (PM-JP "Macro technique")
+  std::string expanded_;                // the current block with its macros expanded
+  std::vector<CallFrame> call_frames_;  // one per subprogram level (flow_.depth() - 1)
+  std::unordered_map<int, ProcSignature> signatures_;          // by file id
+  std::map<std::string, ProcSignature, std::less<>> externs_;  // EXTERN declarations
+  ModalCall mcall_;
+  int modal_depth_ = 0;     // levels of an MCALL subprogram (and what it calls) now running
+  lang::Block scan_block_;  // a subprogram's first block, parsed for its PROC header
 
   lang::Block block_;
   lang::TextPos line_pos_;  // start of the executing line

@@ -4,6 +4,7 @@
 // are converted is in variables.hpp.
 #pragma once
 
+#include <deque>
 #include <span>
 #include <string>
 #include <string_view>
@@ -69,7 +70,9 @@ class VariableStore {
   Limits limits_;
   std::vector<double> r_;
   std::vector<bool> r_written_;
-  std::vector<VariableMap> scopes_;  // one per active program level, main program first
+  // One per active program level, main program first; a deque keeps the caller's variables in
+  // place while a call level is added (a VAR parameter points at them).
+  std::deque<VariableMap> scopes_;
   VariableMap globals_;
   VariableMap main_vars_;  // the main program's variables after it ended (for --vars)
   size_t variable_count_ = 0;

@@ -17,6 +17,9 @@ struct UserVariable {
   int string_length = 0;
   std::vector<lang::Value> data;   // one element for scalars, row-major for arrays
   lang::DefAttributes attributes;  // LLI/ULI limits of the DEF
+  // A call-by-reference parameter bound to a whole variable of the caller (PROC .. VAR):
+  // VariableStore::find gives the caller's variable itself.
+  UserVariable* ref = nullptr;
   bool isArray() const { return dims[0] > 0; }
 };
 

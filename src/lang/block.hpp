@@ -87,7 +87,7 @@ struct Stmt {
   std::string_view name;           // address, keyword, variable or program name
   int ext = -1;                    // address extension (M2=6 -> 2)
   int expr = -1;                   // value / right-hand side / condition / start value
-  int expr2 = -1;                  // FOR: end value
+  int expr2 = -1;                  // FOR: end value; PROC: attribute bits (ProcAttribute)
   int target = -1;                 // Assign and FOR: l-value node; jumps: target node
   JumpKind jump = JumpKind::None;  // a jump statement (also in a CaseArm or after IF)
   AxisMode mode = AxisMode::Default;
@@ -114,9 +114,20 @@ struct Decl {
   int init_first = -1;    // SET(...)/REP(...) list: first entry in `args`
   int init_count = 0;
   bool init_rep = false;  // REP(x): fill the array with x
+  bool by_ref = false;    // PROC/EXTERN parameter with VAR (call by reference)
   int column = 0;
   bool global = false;  // DEF NCK / DEF CHAN: global user data (GUD)
   DefAttributes attributes;
+};
+
+// Attributes of a PROC statement (PM-JP "Subprogram technique"), bits of the statement's expr2.
+enum ProcAttribute : int {
+  kProcSave = 1,       // SAVE: modal G functions and frames restored at the return
+  kProcSblof = 2,      // SBLOF: one single block
+  kProcDisplof = 4,    // DISPLOF: the call block is displayed instead
+  kProcActblocno = 8,  // ACTBLOCNO: with DISPLOF, alarms name the block inside
+  kProcIcycof = 16,    // ICYCOF: technology cycles in one IPO cycle
+  kProcPrepro = 32,    // PREPRO: prepared at power-on
 };
 
 struct Block {

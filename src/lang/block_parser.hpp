@@ -4,7 +4,8 @@
 //   simple_words.cpp       the fast path for blocks of plain address words (G1 X10 CR=5)
 //   expression_parser.cpp  operands and operators by priority (PM-NC "Arithmetic operators")
 //   statement_parser.cpp   address words, assignments, calls
-//   control_parser.cpp     DEF, IF/WHILE/UNTIL, FOR, CASE, PROC and the jumps
+//   control_parser.cpp     DEF, IF/WHILE/UNTIL, FOR, CASE and the jumps
+//   call_parser.cpp        PROC with its parameters, EXTERN, MCALL, CALL, PCALL
 // and, shared with other users: line_normalize.cpp (upper case, comment cut, bad bytes),
 // lexical.hpp (character classes, name lists), number_scan.hpp (the one scan of numbers).
 // Small helpers that every part uses are inline here. Member functions declared `inline` below
@@ -145,13 +146,21 @@ class Parser {
   bool attribute(DefAttributes& a);
   void macroDefinition(Stmt& st);
   void forStatement(Stmt& st);
-  void procStatement(Stmt& st);
+  static bool typeOf(std::string_view w, VarType& t);
   void caseArms();
   void definition(int col);
   void declarator(VarType type, int string_length);
   void checkVariableName(std::string_view name, size_t at);
   void checkOneLetterName(char letter, bool array);
   void arrayInitialiser(Decl& d);
+
+  // --- call_parser.cpp --------------------------------------------------------------------------
+  void callStatement(Stmt& st);
+  void procHeader(Stmt& st);
+  void parameterList(bool named);
+  void formalParameter(bool named);
+  int programName(bool path);
+  void callBlockRange(Stmt& st);
 };
 
 }  // namespace ncoffset::lang

@@ -9,9 +9,8 @@
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::lang {
-namespace {
 
-bool typeOf(std::string_view w, VarType& t) {
+bool Parser::typeOf(std::string_view w, VarType& t) {
   if (w == "INT")
     t = VarType::Int;
   else if (w == "REAL")
@@ -30,8 +29,6 @@ bool typeOf(std::string_view w, VarType& t) {
     return false;
   return true;
 }
-
-}  // namespace
 
 int Parser::jumpTarget() {
   skipSpaces();
@@ -89,8 +86,8 @@ void Parser::controlStatement(std::string_view kw, int col) {
     caseArms();
     return;
   }
-  if (kw == "PROC") {
-    procStatement(st);
+  if (kw == "PROC" || kw == "EXTERN" || kw == "MCALL" || kw == "CALL" || kw == "PCALL") {
+    callStatement(st);
     return;
   }
   if (kw == "REPEATB" || (kw == "REPEAT" && (skipSpaces(), i_ < s_.size()))) {
@@ -125,39 +122,6 @@ void Parser::forStatement(Stmt& st) {
   i_ += 2;
   st.expr2 = expression();
   b_.stmts.push_back(st);
-}
-
-// PROC <name>(<parameters>) [attributes]
-void Parser::procStatement(Stmt& st) {
-  skipSpaces();
-  if (!isAlpha(peek())) syntax("program name expected after PROC");
-  std::string_view name = ident();
-  Node n;
-  n.kind = NodeKind::Name;
-  n.text = name;
-  st.target = addNode(n);
-  skipSpaces();
-  if (peek() == '(') {
-    // Formal parameters (e.g. `REAL LEN, VAR INT N`): counted, not parsed further.
-    ++i_;
-    int depth = 1, count = 0;
-    bool any = false;
-    while (i_ < s_.size() && depth > 0) {
-      char ch = s_[i_++];
-      if (ch == '(')
-        ++depth;
-      else if (ch == ')')
-        --depth;
-      else if (ch == ',' && depth == 1)
-        ++count;
-      else if (ch != ' ')
-        any = true;
-    }
-    if (depth != 0) syntax("')' expected after the PROC parameters");
-    st.ext = any ? count + 1 : 0;
-  }
-  b_.stmts.push_back(st);
-  // Attributes such as SAVE or DISPLOF may follow; they are kept as calls.
 }
 
 // REPEAT <start> [<end>] [P=<n>] and REPEATB <label> [P=<n>] (PM-JP "Program section

@@ -61,6 +61,10 @@ inline bool isControlKeyword(std::string_view w) {
     case packName("GOTOC"):
     case packName("CASE"):
     case packName("PROC"):
+    case packName("EXTERN"):
+    case packName("MCALL"):
+    case packName("CALL"):
+    case packName("PCALL"):
       return true;
     default:
       return false;

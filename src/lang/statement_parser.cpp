@@ -184,6 +184,18 @@ void Parser::addWord(std::string_view address, int ext, int value, int col, bool
 void Parser::numericAddress(int col) {
   std::string_view address = std::string_view(s_).substr(i_, 1);
   ++i_;
+  if (address[0] == 'L') {
+    // L123(args): a program with a number as its name, called with parameters (PM-JP
+    // "Subprogram technique").
+    size_t j = i_;
+    while (j < s_.size() && isDigit(s_[j])) ++j;
+    if (j > i_ && j < s_.size() && s_[j] == '(') {
+      const std::string_view name = std::string_view(s_).substr(i_ - 1, j - i_ + 1);
+      i_ = j;
+      procedureCall(name, col);
+      return;
+    }
+  }
   // The common word (X10, G1, F1000, T1 D1): digits not followed by '=' and no R parameter;
   // one scan decides it. Longer digit runs take the paths below, which report them.
   if (address[0] != 'R') {

@@ -1,0 +1,214 @@
+// Subprogram calls (PM-JP "Subprogram technique"): the statements PROC, EXTERN, MCALL, CALL and
+// PCALL, entering and leaving a call level (parameters, SAVE, the write-back of VAR parameters)
+// and the modal call after a block with a path motion. The arguments and their binding are in
+// call_arguments.cpp; the program levels themselves in ProgramFlow.
+#include <fmt/format.h>
+
+#include <cctype>
+
+#include "interp/interpreter.hpp"
+#include "interp/predefined_names.hpp"
+#include "lang/reserved_names.hpp"
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::interp {
+
+using lang::Node;
+using lang::NodeKind;
+using lang::Stmt;
+
+void Interpreter::resetCalls() {
+  call_frames_.clear();
+  mcall_ = {};
+  modal_depth_ = 0;
+}
+
+bool Interpreter::callStatement(const Stmt& st) {
+  const std::string_view kw = st.name;
+  if (kw == "PROC") {
+    procStatement(st);
+    return true;
+  }
+  if (kw == "EXTERN") {
+    // The declaration of a subprogram with parameters: its parameter types (PM-JP "EXTERN").
+    ProcSignature decl;
+    decl.has_proc = true;
+    for (const auto& d : block_.decls)
+      decl.params.push_back(
+          {std::string(d.name), d.type, d.string_length, {d.dims[0], d.dims[1]}, d.by_ref});
+    externs_[std::string(block_.node(st.target).text)] = std::move(decl);
+    return true;
+  }
+  if (kw == "MCALL") {
+    modalCallStatement(st);
+    return true;
+  }
+  if (kw == "PCALL") {
+    const Node& n = block_.node(st.target);
+    collectCall(n.text, n.kind == NodeKind::Call ? st.target : -1);
+    return true;
+  }
+  if (kw == "CALL") {
+    indirectCall(st);
+    return true;
+  }
+  return false;
+}
+
+// The PROC line itself: the parameters were bound by the call. A main program with parameters
+// has no caller: its parameters take their defaults.
+void Interpreter::procStatement(const Stmt& st) {
+  if (flow_.depth() > 1 || st.ext == 0) return;
+  CallFrame main;
+  main.signature = &signatureOf(*flow_.level().program);
+  bindParameters(main);
+}
+
+void Interpreter::modalCallStatement(const Stmt& st) {
+  words_.mcall = true;
+  if (st.target < 0) {  // MCALL alone: the modal call ends
+    mcall_ = {};
+    return;
+  }
+  const Node& n = block_.node(st.target);
+  if (!programExists(n.text) && externs_.find(n.text) == externs_.end())
+    raise(AlarmNumber::ProgramNotFound,
+          fmt::format("program {} not existing (MCALL; looked for {}.SPF beside the main program)",
+                      n.text, n.text));
+  ModalCall next;
+  next.active = true;
+  next.name = std::string(n.text);
+  // The arguments are taken when MCALL is programmed (docs/language.md "MCALL").
+  if (n.kind == NodeKind::Call) next.args = actualArguments(st.target, true);
+  mcall_ = std::move(next);
+}
+
+// CALL <name expression>: the program whose name the expression gives (PM-JP "Indirect
+// subprogram call").
+void Interpreter::indirectCall(const Stmt& st) {
+  if (st.expr < 0 || st.target >= 0)
+    raise(AlarmNumber::NotModelled,
+          "CALL .. BLOCK .. TO .. (a program section as a subprogram) is not modelled by "
+          "ncoffset");
+  lang::Value v = eval_.eval(block_, st.expr);
+  if (!v.isText() || v.str.empty())
+    raise(AlarmNumber::TypeMismatch,
+          fmt::format("operation not compatible with data type: CALL needs a program name (a "
+                      "STRING), not {}",
+                      lang::typeName(v.type)));
+  std::string name = v.str;
+  for (auto& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if (!words_.call.empty())
+    raise(AlarmNumber::NameNotDefined,
+          fmt::format("name {} not defined (a block calls one subprogram; CALL {} follows)",
+                      words_.call, name));
+  call_name_ = std::move(name);
+  words_.call = call_name_;
+}
+
+bool Interpreter::isSubprogramName(std::string_view name) {
+  // L123 is an address with a number, and a program name when it is called (L123(args)).
+  const bool l_number = name.size() > 1 && name[0] == 'L' &&
+                        name.find_first_not_of("0123456789", 1) == std::string_view::npos;
+  if (!l_number && lang::isPredefinedName(name)) return false;
+  // A predefined procedure (SETAL, WAITM, ...) is never a program of the same name; a standard
+  // cycle (CYCLE81, ...) is, where one is there (docs/names.md).
+  if (const PredefinedName* p = findPredefinedName(name); p && !p->cycle) return false;
+  return externs_.find(name) != externs_.end() || programExists(name);
+}
+
+void Interpreter::collectCall(std::string_view name, int args_node) {
+  if (!words_.call.empty())
+    raise(AlarmNumber::NameNotDefined,
+          fmt::format("name {} not defined (a block calls one subprogram; {} follows)", words_.call,
+                      name));
+  words_.call = name;
+  words_.call_args = args_node;
+}
+
+void Interpreter::enterSubprogram(std::string_view name, long long repeat,
+                                  std::vector<CallArg> args, bool modal) {
+  auto ext = externs_.find(name);
+  if (ext != externs_.end() && args.size() > ext->second.params.size())
+    raise(AlarmNumber::TooManyParams,
+          fmt::format("number of parameters too high: {} arguments for {} (EXTERN declares {})",
+                      args.size(), name, ext->second.params.size()));
+  const size_t files_before = flow_.fileCount();
+  try {
+    flow_.call(name, repeat);
+  } catch (const AlarmError&) {
+    // An alarm of a program loaded by this call (its structure) belongs to that program.
+    if (flow_.fileCount() > files_before) file_ = static_cast<int>(flow_.fileCount()) - 1;
+    throw;
+  }
+  vars_.pushScope();
+  CallFrame& f = call_frames_.emplace_back();
+  f.modal = modal;
+  if (modal) ++modal_depth_;
+  f.args = std::move(args);
+  f.signature = &signatureOf(*flow_.level().program);
+  if (f.signature->attributes & lang::kProcSave) {
+    f.save = true;
+    f.saved_modal = modal_;
+    f.saved_settable = frames_.settableActive();
+    f.saved_programmable = frames_.programmable();
+  }
+  bindParameters(f);
+}
+
+void Interpreter::leaveSubprogram() {
+  CallFrame& f = call_frames_.back();
+  // VAR parameters bound to an array element or an R parameter go back to the caller.
+  std::vector<lang::Value> out;
+  for (const auto& w : f.write_backs) out.push_back(vars_.find(w.param)->data[0]);
+  const bool again = flow_.leave();
+  if (again)
+    vars_.clearScope();  // the next pass starts without the variables of this one
+  else
+    vars_.popScope();
+  for (size_t k = 0; k < out.size(); ++k) {
+    const WriteBack& w = f.write_backs[k];
+    if (w.var)
+      w.var->data[w.offset] = out[k];
+    else
+      vars_.setR(w.r, out[k].num);
+  }
+  if (again) {
+    f.write_backs.clear();
+    bindParameters(f);  // each pass gets its arguments anew
+    return;
+  }
+  if (f.save) restoreSaved(f);
+  if (f.modal) --modal_depth_;
+  call_frames_.pop_back();
+}
+
+// SAVE: the modal G functions and the frames of the call come back (PM-JP "SAVE"; K2 "Subroutine
+// return with SAVE": the settable frame only if another G54.. is active, the programmable frame
+// always; basic and system frames are not modelled).
+void Interpreter::restoreSaved(const CallFrame& f) {
+  const ModalState now = modal_;
+  if (now.trc != f.saved_modal.trc)
+    raise(AlarmNumber::NotModelled,
+          "return from a SAVE subprogram with another tool radius compensation (G40/G41/G42) "
+          "than at its call is not modelled by ncoffset");
+  modal_ = f.saved_modal;
+  // Addresses are no G functions: F, DISC=, OFFN=, T and D stay as the subprogram left them.
+  modal_.feed = now.feed;
+  modal_.disc = now.disc;
+  modal_.offn = now.offn;
+  modal_.tool = now.tool;
+  modal_.edge = now.edge;
+  if (now.frame_select != f.saved_modal.frame_select) frames_.settableActive() = f.saved_settable;
+  frames_.programmable() = f.saved_programmable;
+  frames_.update();
+}
+
+// MCALL (PM-JP "Modal subprogram call"): after every block that moves a geometry axis, outside
+// the modally called subprogram itself (its blocks and what it calls do not call it again).
+void Interpreter::modalCallAfter(bool path_block) {
+  if (!path_block || words_.mcall || modal_depth_ > 0 || ended_) return;
+  enterSubprogram(mcall_.name, 1, mcall_.args, true);
+}
+
+}  // namespace ncoffset::interp
