@@ -259,6 +259,7 @@ bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool i
     }
     return true;
   }
+  if (name[0] == '$' && readCallVariable(name, idx, out)) return true;  // $P_SUBPAR
   if (readSystem(name, idx, indexed, out)) return true;
   if (!indexed && name.size() == 1 && (name[0] == 'X' || name[0] == 'Y' || name[0] == 'Z')) {
     out = {lang::Type::Axis, 0, std::string(name), {}};  // a geometry axis name as an AXIS value

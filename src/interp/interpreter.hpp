@@ -81,6 +81,7 @@ class Interpreter final : public lang::Environment {
   void indirectCall(const lang::Stmt& st);
   // NAME(args) names a subprogram (not a predefined procedure).
   bool isSubprogramName(std::string_view name);
+  bool readCallVariable(std::string_view name, std::span<const lang::Value> idx, lang::Value& out);
   // The block calls `name` at its end with the arguments of the Call node `args_node`.
   void collectCall(std::string_view name, int args_node);
   std::vector<CallArg> actualArguments(int args_node, bool modal);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 
 #include "interp/interpreter.hpp"
 #include "lang/reserved_names.hpp"
@@ -47,7 +48,7 @@ bool Interpreter::callStatement(const Stmt& st) {
     collectCall(n.text, n.kind == NodeKind::Call ? st.target : -1);
     return true;
   }
-  if (kw == "CALL") {
+  if (kw == "CALL" || kw == "EXTCALL") {
     indirectCall(st);
     return true;
   }
@@ -96,6 +97,13 @@ void Interpreter::indirectCall(const Stmt& st) {
                       "STRING), not {}",
                       lang::typeName(v.type)));
   std::string name = v.str;
+  if (st.name == "EXTCALL") {
+    // EXTCALL ("/path/PART.SPF"): the program from external storage; ncoffset reads every
+    // program from the search path, so the last part of the path without its type names it.
+    if (size_t slash = name.find_last_of("/\\"); slash != std::string::npos)
+      name.erase(0, slash + 1);
+    if (size_t dot = name.rfind('.'); dot != std::string::npos && dot > 0) name.erase(dot);
+  }
   for (auto& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   if (!words_.call.empty())
     raise(AlarmNumber::NameNotDefined,
@@ -105,10 +113,31 @@ void Interpreter::indirectCall(const Stmt& st) {
   words_.call = call_name_;
 }
 
+// $P_SUBPAR[n]: TRUE when the n-th argument of the current call was given (PM-JP "Incomplete
+// parameter transfer"); in the main program FALSE.
+bool Interpreter::readCallVariable(std::string_view name, std::span<const lang::Value> idx,
+                                   lang::Value& out) {
+  if (name != "$P_SUBPAR") return false;
+  if (idx.size() != 1) raise(AlarmNumber::ArrayIndex1, "$P_SUBPAR takes one index");
+  const double n = lang::toNumber(idx[0], "array index");
+  const CallFrame* f = call_frames_.empty() ? nullptr : &call_frames_.back();
+  const size_t count = f ? f->signature->params.size() : 0;
+  if (n != std::floor(n) || n < 1 || n > static_cast<double>(f ? count : 127))
+    raise(AlarmNumber::ArrayIndex1,
+          fmt::format("illegal array index: $P_SUBPAR[{}] (parameters 1..{})", n, count));
+  const size_t k = static_cast<size_t>(n) - 1;
+  out = lang::Value::boolean(f && k < f->args.size() && f->args[k].kind != CallArg::Kind::Omitted);
+  return true;
+}
+
 bool Interpreter::isSubprogramName(std::string_view name) {
   // L123 is an address with a number, and a program name when it is called (L123(args)).
   const bool l_number = name.size() > 1 && name[0] == 'L' &&
                         name.find_first_not_of("0123456789", 1) == std::string_view::npos;
+  if (name == "RET")
+    raise(AlarmNumber::NotModelled,
+          "RET with parameters (the return to a label or block number, or over several levels) "
+          "is not modelled by ncoffset");
   if (!l_number && lang::isPredefinedName(name)) return false;
   return externs_.find(name) != externs_.end() || programExists(name);
 }
