@@ -118,6 +118,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
       executeBlock();
+      if (line_pos_.offset == section_end_) endSection();  // CALL .. BLOCK .. TO ..
     } catch (const std::bad_alloc&) {
       raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
     }

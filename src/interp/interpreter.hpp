@@ -95,6 +95,10 @@ class Interpreter final : public lang::Environment {
   // After a block that moved a geometry axis: the active MCALL subprogram (PM-JP "MCALL").
   void modalCallAfter(bool path_block);
   void resetCalls();
+  // CALL [name] BLOCK start TO end (subprogram_call.cpp).
+  void callSection(const lang::Stmt& st);
+  bool sectionJump(int target_node);
+  void endSection();
   const lang::ControlLink& link() const { return flow_.link(line_pos_.offset); }
   void define(const lang::Decl& d);
   void assign(const lang::Stmt& st);
@@ -148,7 +152,8 @@ class Interpreter final : public lang::Environment {
   std::unordered_map<int, ProcSignature> signatures_;          // by file id
   std::map<std::string, ProcSignature, std::less<>> externs_;  // EXTERN declarations
   ModalCall mcall_;
-  int modal_depth_ = 0;     // levels of an MCALL subprogram (and what it calls) now running
+  int modal_depth_ = 0;  // levels of an MCALL subprogram (and what it calls) now running
+  size_t section_end_ = static_cast<size_t>(-1);  // the top level's CallFrame::section_end
   lang::Block scan_block_;  // a subprogram's first block, parsed for its PROC header
 
   lang::Block block_;

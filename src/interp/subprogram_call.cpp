@@ -21,6 +21,53 @@ void Interpreter::resetCalls() {
   call_frames_.clear();
   mcall_ = {};
   modal_depth_ = 0;
+  section_end_ = static_cast<size_t>(-1);
+}
+
+// CALL BLOCK <start> TO <end> (a section of this program) and CALL <name> BLOCK <start> TO
+// <end> (a section of another program): a program level that runs from the start label (or
+// block number) through the end label's block, then returns after the CALL (PM-JP "Indirect
+// call of a program part"). A section of the calling program shares its variables.
+void Interpreter::callSection(const Stmt& st) {
+  const bool own = st.expr >= 0;
+  if (own) {
+    lang::Value v = eval_.eval(block_, st.expr);
+    if (!v.isText() || v.str.empty())
+      raise(AlarmNumber::TypeMismatch,
+            "operation not compatible with data type: CALL needs a program name (a STRING)");
+    std::string name = v.str;
+    for (auto& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    enterSubprogram(name, 1, {}, false);
+  } else {
+    flow_.callProgram(*flow_.level().program);
+    call_frames_.emplace_back().own_scope = false;
+  }
+  CallFrame& f = call_frames_.back();
+  if (st.expr2 >= 0) {
+    if (!sectionJump(st.expr2))
+      raise(AlarmNumber::JumpNotFound,
+            "jump destination: the end of the CALL BLOCK section not "
+            "found");
+    f.section_end = flow_.level().pos.offset;
+  }
+  if (!sectionJump(st.target))
+    raise(AlarmNumber::JumpNotFound,
+          "jump destination: the start of the CALL BLOCK section not found");
+  section_end_ = f.section_end;
+}
+
+bool Interpreter::sectionJump(int target_node) {
+  const Node& t = block_.node(target_node);
+  const JumpSearch anywhere{false, true, false};  // backward from beyond the end: the file
+  const size_t end = static_cast<size_t>(-1);
+  if (t.kind == NodeKind::BlockNo)
+    return flow_.jumpToBlockNumber(static_cast<long long>(t.number), end, anywhere);
+  if (t.kind != NodeKind::Name) return false;
+  return flow_.jumpToLabel(std::string(t.text), end, anywhere);
+}
+
+void Interpreter::endSection() {
+  if (flow_.depth() > 1) leaveSubprogram();
 }
 
 bool Interpreter::callStatement(const Stmt& st) {
@@ -86,10 +133,10 @@ void Interpreter::modalCallStatement(const Stmt& st) {
 // CALL <name expression>: the program whose name the expression gives (PM-JP "Indirect
 // subprogram call").
 void Interpreter::indirectCall(const Stmt& st) {
-  if (st.expr < 0 || st.target >= 0)
-    raise(AlarmNumber::NotModelled,
-          "CALL .. BLOCK .. TO .. (a program section as a subprogram) is not modelled by "
-          "ncoffset");
+  if (st.target >= 0) {
+    callSection(st);
+    return;
+  }
   lang::Value v = eval_.eval(block_, st.expr);
   if (!v.isText() || v.str.empty())
     raise(AlarmNumber::TypeMismatch,
@@ -179,6 +226,7 @@ void Interpreter::enterSubprogram(std::string_view name, long long repeat,
     f.saved_programmable = frames_.programmable();
   }
   bindParameters(f);
+  section_end_ = f.section_end;
 }
 
 void Interpreter::leaveSubprogram() {
@@ -189,7 +237,7 @@ void Interpreter::leaveSubprogram() {
   const bool again = flow_.leave();
   if (again)
     vars_.clearScope();  // the next pass starts without the variables of this one
-  else
+  else if (f.own_scope)
     vars_.popScope();
   for (size_t k = 0; k < out.size(); ++k) {
     const WriteBack& w = f.write_backs[k];
@@ -206,6 +254,7 @@ void Interpreter::leaveSubprogram() {
   if (f.save) restoreSaved(f);
   if (f.modal) --modal_depth_;
   call_frames_.pop_back();
+  section_end_ = call_frames_.empty() ? static_cast<size_t>(-1) : call_frames_.back().section_end;
 }
 
 // SAVE: the modal G functions and the frames of the call come back (PM-JP "SAVE"; K2 "Subroutine
