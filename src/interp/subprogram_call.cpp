@@ -168,6 +168,7 @@ bool Interpreter::readCallVariable(std::string_view name, std::span<const lang::
   if (idx.size() != 1) raise(AlarmNumber::ArrayIndex1, "$P_SUBPAR takes one index");
   const double n = lang::toNumber(idx[0], "array index");
   const CallFrame* f = call_frames_.empty() ? nullptr : &call_frames_.back();
+  if (f && !f->signature) f = nullptr;  // a CALL BLOCK section of the same program: no call
   const size_t count = f ? f->signature->params.size() : 0;
   if (n != std::floor(n) || n < 1 || n > static_cast<double>(f ? count : 127))
     raise(AlarmNumber::ArrayIndex1,
