@@ -118,7 +118,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
       executeBlock();
-      if (line_pos_.offset == section_end_) endSection();  // CALL .. BLOCK .. TO ..
+      if (line_pos_.offset == section_end_) [[unlikely]]
+        endSection();  // CALL .. BLOCK .. TO ..
     } catch (const std::bad_alloc&) {
       raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
     }
@@ -214,7 +215,10 @@ void Interpreter::returnFromSubprogram() {
 }
 
 void Interpreter::callSubprogram(std::string_view name, long long repeat) {
-  enterSubprogram(name, repeat, actualArguments(words_.call_args, false), false);
+  const int args = call_args_;
+  call_args_ = -1;
+  mcall_set_ = false;  // an MCALL in a block with a call: the call is the block's only one
+  enterSubprogram(name, repeat, actualArguments(args, false), false);
 }
 
 // --- variables ------------------------------------------------------------------------------

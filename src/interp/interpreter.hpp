@@ -93,7 +93,7 @@ class Interpreter final : public lang::Environment {
   void bindParameter(const FormalParameter& p, const CallArg& a, size_t position, CallFrame& frame);
   void restoreSaved(const CallFrame& frame);
   // After a block that moved a geometry axis: the active MCALL subprogram (PM-JP "MCALL").
-  void modalCallAfter(bool path_block);
+  void modalCallAfter();
   void resetCalls();
   // CALL [name] BLOCK start TO end (subprogram_call.cpp).
   void callSection(const lang::Stmt& st);
@@ -154,6 +154,9 @@ class Interpreter final : public lang::Environment {
   ModalCall mcall_;
   int modal_depth_ = 0;  // levels of an MCALL subprogram (and what it calls) now running
   size_t section_end_ = static_cast<size_t>(-1);  // the top level's CallFrame::section_end
+  // Kept here, not in BlockWords, so that a block without a call pays nothing for them:
+  int call_args_ = -1;      // NAME(args) of this block: the Call node of the arguments
+  bool mcall_set_ = false;  // MCALL NAME in this block: the block itself does not call
   lang::Block scan_block_;  // a subprogram's first block, parsed for its PROC header
 
   lang::Block block_;

@@ -19,6 +19,8 @@ using lang::Stmt;
 
 void Interpreter::resetCalls() {
   call_frames_.clear();
+  call_args_ = -1;
+  mcall_set_ = false;
   mcall_ = {};
   modal_depth_ = 0;
   section_end_ = static_cast<size_t>(-1);
@@ -112,7 +114,6 @@ void Interpreter::procStatement(const Stmt& st) {
 }
 
 void Interpreter::modalCallStatement(const Stmt& st) {
-  words_.mcall = true;
   if (st.target < 0) {  // MCALL alone: the modal call ends
     mcall_ = {};
     return;
@@ -128,6 +129,7 @@ void Interpreter::modalCallStatement(const Stmt& st) {
   // The arguments are taken when MCALL is programmed (docs/language.md "MCALL").
   if (n.kind == NodeKind::Call) next.args = actualArguments(st.target, true);
   mcall_ = std::move(next);
+  mcall_set_ = true;
 }
 
 // CALL <name expression>: the program whose name the expression gives (PM-JP "Indirect
@@ -196,7 +198,7 @@ void Interpreter::collectCall(std::string_view name, int args_node) {
           fmt::format("name {} not defined (a block calls one subprogram; {} follows)", words_.call,
                       name));
   words_.call = name;
-  words_.call_args = args_node;
+  call_args_ = args_node;
 }
 
 void Interpreter::enterSubprogram(std::string_view name, long long repeat,
@@ -281,8 +283,23 @@ void Interpreter::restoreSaved(const CallFrame& f) {
 
 // MCALL (PM-JP "Modal subprogram call"): after every block that moves a geometry axis, outside
 // the modally called subprogram itself (its blocks and what it calls do not call it again).
-void Interpreter::modalCallAfter(bool path_block) {
-  if (!path_block || words_.mcall || modal_depth_ > 0 || ended_) return;
+void Interpreter::modalCallAfter() {
+  // The block moved the path as finishBlock decides it: axis words that are targets (not of a
+  // frame statement, G58/G59 or G25/G26), circle words with G2/G3, or a SAR block.
+  const bool axes_consumed = !words_.frame_command.empty() || words_.axial_offset == 58 ||
+                             words_.axial_offset == 59 || words_.axial_offset == 25 ||
+                             words_.axial_offset == 26;
+  const bool circle_words = words_.centre[0] || words_.centre[1] || words_.centre[2] || words_.cr ||
+                            words_.ar || words_.turn;
+  const bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
+  const bool path_block =
+      !axes_consumed && (words_.axis[0] || words_.axis[1] || words_.axis[2] ||
+                         (is_arc && circle_words) || words_.sar != core::SarKind::None);
+  if (mcall_set_) {  // the MCALL block itself
+    mcall_set_ = false;
+    return;
+  }
+  if (!path_block || modal_depth_ > 0 || ended_) return;
   enterSubprogram(mcall_.name, 1, mcall_.args, true);
 }
 
