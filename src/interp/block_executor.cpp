@@ -63,9 +63,7 @@ void Interpreter::finishBlock() {
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   bool moved = false;
-  const bool path_block =
-      !axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None);
-  if (path_block)
+  if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
     moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
   if (moved) without_motion_ = 0;
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
@@ -86,7 +84,7 @@ void Interpreter::finishBlock() {
   } else if (words_.repeat) {
     raise(AlarmNumber::SyntaxError, "pass count P without a subprogram call");
   } else if (mcall_.active) {
-    modalCallAfter(path_block);
+    modalCallAfter();
   }
 }
 

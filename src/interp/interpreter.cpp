@@ -120,6 +120,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
       executeBlock();
+      if (line_pos_.offset == section_end_) [[unlikely]]
+        endSection();  // CALL .. BLOCK .. TO ..
     } catch (const std::bad_alloc&) {
       raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
     }
@@ -226,7 +228,10 @@ void Interpreter::returnFromSubprogram() {
 }
 
 void Interpreter::callSubprogram(std::string_view name, long long repeat) {
-  enterSubprogram(name, repeat, actualArguments(words_.call_args, false), false);
+  const int args = call_args_;
+  call_args_ = -1;
+  mcall_set_ = false;  // an MCALL in a block with a call: the call is the block's only one
+  enterSubprogram(name, repeat, actualArguments(args, false), false);
 }
 
 // --- variables ------------------------------------------------------------------------------
@@ -281,6 +286,7 @@ bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool i
     }
     return true;
   }
+  if (name[0] == '$' && readCallVariable(name, idx, out)) return true;  // $P_SUBPAR
   if (readSystem(name, idx, indexed, out)) return true;
   if (!indexed && name.size() == 1 && (name[0] == 'X' || name[0] == 'Y' || name[0] == 'Z')) {
     out = {lang::Type::Axis, 0, std::string(name), {}};  // a geometry axis name as an AXIS value

@@ -88,6 +88,7 @@ class Interpreter final : public lang::Environment {
   void indirectCall(const lang::Stmt& st);
   // NAME(args) names a subprogram (not a predefined procedure).
   bool isSubprogramName(std::string_view name);
+  bool readCallVariable(std::string_view name, std::span<const lang::Value> idx, lang::Value& out);
   // The block calls `name` at its end with the arguments of the Call node `args_node`.
   void collectCall(std::string_view name, int args_node);
   std::vector<CallArg> actualArguments(int args_node, bool modal);
@@ -99,8 +100,12 @@ class Interpreter final : public lang::Environment {
   void bindParameter(const FormalParameter& p, const CallArg& a, size_t position, CallFrame& frame);
   void restoreSaved(const CallFrame& frame);
   // After a block that moved a geometry axis: the active MCALL subprogram (PM-JP "MCALL").
-  void modalCallAfter(bool path_block);
+  void modalCallAfter();
   void resetCalls();
+  // CALL [name] BLOCK start TO end (subprogram_call.cpp).
+  void callSection(const lang::Stmt& st);
+  bool sectionJump(int target_node);
+  void endSection();
   const lang::ControlLink& link() const { return flow_.link(line_pos_.offset); }
   void define(const lang::Decl& d);
   void assign(const lang::Stmt& st);
@@ -173,7 +178,11 @@ class Interpreter final : public lang::Environment {
   std::unordered_map<int, ProcSignature> signatures_;          // by file id
   std::map<std::string, ProcSignature, std::less<>> externs_;  // EXTERN declarations
   ModalCall mcall_;
-  int modal_depth_ = 0;     // levels of an MCALL subprogram (and what it calls) now running
+  int modal_depth_ = 0;  // levels of an MCALL subprogram (and what it calls) now running
+  size_t section_end_ = static_cast<size_t>(-1);  // the top level's CallFrame::section_end
+  // Kept here, not in BlockWords, so that a block without a call pays nothing for them:
+  int call_args_ = -1;      // NAME(args) of this block: the Call node of the arguments
+  bool mcall_set_ = false;  // MCALL NAME in this block: the block itself does not call
   lang::Block scan_block_;  // a subprogram's first block, parsed for its PROC header
 
   lang::Block block_;

@@ -67,8 +67,6 @@ struct BlockWords {
   bool tool_change = false;         // M6 (MD22560) for the master spindle
   std::string_view call;            // subprogram to call at block end (block text or call_name_)
   std::optional<long long> repeat;  // P
-  int call_args = -1;               // NAME(args): the Call node of the arguments
-  bool mcall = false;               // MCALL in this block: its own block does not call
   core::SarKind sar = core::SarKind::None;        // G147..G348 (smooth approach / retraction)
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;

@@ -113,6 +113,16 @@ void ProgramFlow::call(std::string_view name, long long repeat) {
   levels_.push_back(lvl);
 }
 
+void ProgramFlow::callProgram(LoadedProgram& prog) {
+  if (static_cast<int>(levels_.size()) >= limits_.max_program_levels)
+    raise(AlarmNumber::SubprogramDepth,
+          fmt::format("maximum subprogram level exceeded: {} program levels (--max-program-levels)",
+                      limits_.max_program_levels));
+  ProgramLevel lvl;
+  lvl.program = &prog;
+  levels_.push_back(lvl);
+}
+
 bool ProgramFlow::leave() {
   ProgramLevel& lvl = levels_.back();
   if (lvl.repeat_left > 0) {

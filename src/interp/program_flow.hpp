@@ -100,6 +100,9 @@ class ProgramFlow {
   // A subprogram call with pass count P (alarms 14012 too deep, 12160 pass count, 14011 not
   // found).
   void call(std::string_view name, long long repeat);
+  // A level that runs `prog` once from its start (CALL .. BLOCK: the caller then moves it to
+  // the section's first line; alarm 14012 too deep).
+  void callProgram(LoadedProgram& prog);
   // The current level ends: true if it runs again (pass count), false if it was left.
   bool leave();
 

@@ -58,7 +58,11 @@ struct CallFrame {
   std::vector<CallArg> args;
   std::vector<WriteBack> write_backs;
   bool modal = false;  // called by MCALL
-  bool save = false;   // PROC ... SAVE: the state below is restored at the return
+  // CALL .. BLOCK .. TO ..: the start of the section's last line (the level returns after it)
+  // and whether the level has variables of its own (not for a section of the calling program).
+  size_t section_end = static_cast<size_t>(-1);
+  bool own_scope = true;
+  bool save = false;  // PROC ... SAVE: the state below is restored at the return
   ModalState saved_modal;
   Frame saved_settable;      // $P_IFRAME at the call
   Frame saved_programmable;  // $P_PFRAME at the call

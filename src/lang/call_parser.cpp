@@ -9,6 +9,7 @@
 //   PCALL  target: the program as for MCALL (the path is dropped: the name is the last part)
 //   CALL   expr: the program name (an expression, -1 for CALL BLOCK); target and expr2: the
 //          first and last label of BLOCK .. TO .. (-1 without)
+//   EXTCALL expr: the program name or path (an expression, e.g. ("PART") or "/DIR/PART.SPF")
 #include <string>
 
 #include "lang/block_parser.hpp"
@@ -36,6 +37,8 @@ void Parser::callStatement(Stmt& st) {
     if (i_ < s_.size() && isAlpha(peek())) st.target = programName(false);
   } else if (kw == "PCALL") {
     st.target = programName(true);
+  } else if (kw == "EXTCALL") {
+    st.expr = expression();
   } else {  // CALL
     if (!wordAhead("BLOCK")) st.expr = expression();
     skipSpaces();

@@ -86,7 +86,8 @@ void Parser::controlStatement(std::string_view kw, int col) {
     caseArms();
     return;
   }
-  if (kw == "PROC" || kw == "EXTERN" || kw == "MCALL" || kw == "CALL" || kw == "PCALL") {
+  if (kw == "PROC" || kw == "EXTERN" || kw == "MCALL" || kw == "CALL" || kw == "PCALL" ||
+      kw == "EXTCALL") {
     callStatement(st);
     return;
   }

@@ -65,6 +65,7 @@ inline bool isControlKeyword(std::string_view w) {
     case packName("MCALL"):
     case packName("CALL"):
     case packName("PCALL"):
+    case packName("EXTCALL"):
       return true;
     default:
       return false;
