@@ -40,7 +40,7 @@ void ProgramFlow::begin(LoadedProgram& main) {
   ProgramLevel level;
   level.program = &main;
   level.pos = main.begin;
-  level.watch = main.end;
+  level.text = textUpTo(main, main.end);
   levels_.push_back(level);
 }
 
@@ -108,7 +108,7 @@ void ProgramFlow::call(std::string_view name, long long repeat) {
   ProgramLevel lvl;
   lvl.program = prog;
   lvl.pos = prog->begin;
-  lvl.watch = prog->end;
+  lvl.text = textUpTo(*prog, prog->end);
   lvl.repeat_left = repeat - 1;
   levels_.push_back(lvl);
 }
@@ -119,8 +119,6 @@ bool ProgramFlow::leave() {
     --lvl.repeat_left;
     if (lvl.section) {
       lvl.pos = lvl.section_start;
-      lvl.watch = lvl.section_end;
-      lvl.ending = false;
       return true;
     }
     lvl.pos = lvl.program->begin;

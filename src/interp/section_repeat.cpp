@@ -4,6 +4,7 @@
 // "Program section repetition".
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "interp/interpreter.hpp"
@@ -15,15 +16,9 @@ using lang::TextPos;
 
 // --- ProgramFlow ----------------------------------------------------------------------------
 
-// The current level reached its watched line: the end of its archived program or of its
-// section. Rare (once per pass), so off the per-block path.
-bool ProgramFlow::watchedLine(ProgramLevel& lvl, std::string_view& text) {
-  if (!lvl.watch_inclusive || lvl.ending) return false;
-  // The end line of the section still runs; the read after it ends the pass.
-  lvl.ending = true;
-  bool more = lang::nextLine(lvl.program->source->text(), lvl.pos, text);
-  lvl.watch = lvl.pos.offset;
-  return more;
+std::string_view ProgramFlow::textUpTo(const LoadedProgram& prog, size_t end) {
+  const std::string_view all = prog.source->text();
+  return end < all.size() ? all.substr(0, end) : all;
 }
 
 void ProgramFlow::repeatSection(const Section& s, long long count) {
@@ -42,9 +37,16 @@ void ProgramFlow::repeatSection(const Section& s, long long count) {
   lvl.defs_allowed = false;
   lvl.section = true;
   lvl.section_start = s.start;
-  lvl.section_end = s.end;
-  lvl.watch = s.end;
-  lvl.watch_inclusive = s.inclusive;
+  // The section's text ends before its end line, or (inclusive) after it: reading past it ends
+  // the pass, like the end of a file ends a subprogram.
+  size_t end = s.end;
+  if (s.inclusive) {
+    TextPos after{s.end, 0};
+    std::string_view skip;
+    lang::nextLine(lvl.program->source->text(), after, skip);
+    end = after.offset;
+  }
+  lvl.text = textUpTo(*lvl.program, std::min(end, lvl.program->end));
   levels_.push_back(lvl);
 }
 
