@@ -34,7 +34,16 @@ struct LoadedProgram {
 };
 
 // One program level: the main program (level 0) or an active subprogram.
+// The text of `prog` up to (not including) the line at offset `end`.
+inline std::string_view textUpTo(const LoadedProgram& prog, size_t end) {
+  const std::string_view all = prog.source->text();
+  return end < all.size() ? all.substr(0, end) : all;
+}
+
 struct ProgramLevel {
+  // A level always starts at its program's first line and reads only its program's text (so
+  // there is no default constructor: a level without its text would end at once).
+  explicit ProgramLevel(LoadedProgram& p) : program(&p), pos(p.begin), text(textUpTo(p, p.end)) {}
   LoadedProgram* program = nullptr;
   lang::TextPos pos;  // next line to read
   long long repeat_left = 0;
@@ -136,8 +145,6 @@ class ProgramFlow {
 
  private:
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
-  // The text of `prog` up to (not including) the line at offset `end`.
-  static std::string_view textUpTo(const LoadedProgram& prog, size_t end);
   LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
   LoadedProgram& loadRange(std::shared_ptr<lang::SourceFile> source, lang::TextPos begin,
                            size_t end);

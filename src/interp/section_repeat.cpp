@@ -16,11 +16,6 @@ using lang::TextPos;
 
 // --- ProgramFlow ----------------------------------------------------------------------------
 
-std::string_view ProgramFlow::textUpTo(const LoadedProgram& prog, size_t end) {
-  const std::string_view all = prog.source->text();
-  return end < all.size() ? all.substr(0, end) : all;
-}
-
 void ProgramFlow::repeatSection(const Section& s, long long count) {
   if (static_cast<int>(levels_.size()) >= limits_.max_program_levels)
     raise(AlarmNumber::SubprogramDepth,
@@ -30,8 +25,7 @@ void ProgramFlow::repeatSection(const Section& s, long long count) {
   if (count < 1 || count > 9999)
     raise(AlarmNumber::ValueRange,
           fmt::format("value range exceeded: P={} (pass count 1..9999)", count));
-  ProgramLevel lvl;
-  lvl.program = levels_.back().program;
+  ProgramLevel lvl(*levels_.back().program);
   lvl.pos = s.start;
   lvl.repeat_left = count - 1;
   lvl.defs_allowed = false;
