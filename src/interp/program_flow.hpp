@@ -116,6 +116,10 @@ class ProgramFlow {
   // Whether M2/M30 in the current level ends the whole program: the level is the main
   // program or a section repeated in it.
   bool inMainProgram() const;
+  // An init file that is an archive of several sections (`%_N_SGUD_DEF`, `%_N_TO_INI`, ...):
+  // after the end (M17/M30) of one section the next `%` header is read. False when none
+  // follows.
+  bool nextSection();
   // The label lines of `label` in the current program (nullptr if there is none).
   const std::vector<lang::TextPos>* labelLines(std::string_view label) const;
 
