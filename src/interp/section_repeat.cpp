@@ -141,7 +141,7 @@ void Interpreter::endWord(bool program_end) {
     return;
   }
   if (flow_.depth() > 1)
-    returnFromSubprogram();  // M2/M30 in a subprogram act like M17
+    returnFromSubprogram();                      // M2/M30 in a subprogram act like M17
   else if (!init_file_ || !flow_.nextSection())  // an init archive goes on with its next section
     endProgram();
 }
