@@ -73,4 +73,19 @@ LoadedProgram* ProgramFlow::loadArchive(const std::shared_ptr<lang::SourceFile>&
   return main ? main : any;
 }
 
+bool ProgramFlow::nextSection() {
+  ProgramLevel& lvl = levels_.back();
+  lang::TextPos pos = lvl.pos;
+  std::string_view line;
+  while (true) {
+    const lang::TextPos at = pos;
+    if (!lang::nextLine(lvl.text, pos, line)) return false;
+    if (!line.empty() && line.front() == '%') {
+      lvl.pos = at;
+      lvl.defs_allowed = true;
+      return true;
+    }
+  }
+}
+
 }  // namespace ncoffset::interp

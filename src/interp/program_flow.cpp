@@ -37,11 +37,7 @@ void ProgramFlow::setSearchDir(std::filesystem::path dir) {
 
 void ProgramFlow::begin(LoadedProgram& main) {
   levels_.clear();
-  ProgramLevel level;
-  level.program = &main;
-  level.pos = main.begin;
-  level.watch = main.end;
-  levels_.push_back(level);
+  levels_.emplace_back(main);
 }
 
 LoadedProgram* ProgramFlow::find(std::string_view name) {
@@ -105,10 +101,7 @@ void ProgramFlow::call(std::string_view name, long long repeat) {
           fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main "
                       "program{})",
                       name, name, name, search_path_.empty() ? "" : " and in the --path entries"));
-  ProgramLevel lvl;
-  lvl.program = prog;
-  lvl.pos = prog->begin;
-  lvl.watch = prog->end;
+  ProgramLevel lvl(*prog);
   lvl.repeat_left = repeat - 1;
   levels_.push_back(lvl);
 }
@@ -129,8 +122,6 @@ bool ProgramFlow::leave() {
     --lvl.repeat_left;
     if (lvl.section) {
       lvl.pos = lvl.section_start;
-      lvl.watch = lvl.section_end;
-      lvl.ending = false;
       return true;
     }
     lvl.pos = lvl.program->begin;

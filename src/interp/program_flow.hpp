@@ -34,22 +34,28 @@ struct LoadedProgram {
 };
 
 // One program level: the main program (level 0) or an active subprogram.
+// The text of `prog` up to (not including) the line at offset `end`.
+inline std::string_view textUpTo(const LoadedProgram& prog, size_t end) {
+  const std::string_view all = prog.source->text();
+  return end < all.size() ? all.substr(0, end) : all;
+}
+
 struct ProgramLevel {
+  // A level always starts at its program's first line and reads only its program's text (so
+  // there is no default constructor: a level without its text would end at once).
+  explicit ProgramLevel(LoadedProgram& p) : program(&p), pos(p.begin), text(textUpTo(p, p.end)) {}
   LoadedProgram* program = nullptr;
   lang::TextPos pos;  // next line to read
   long long repeat_left = 0;
   bool defs_allowed = true;
-  // The line where this level stops (kNoOffset: at the end of the file): the end of an
-  // archived program, or of a repeated program section. `watch_inclusive`: the line is still
-  // executed (the end label of REPEAT A B, the block of REPEATB), else the level stops before it.
-  size_t watch = kNoOffset;
-  bool watch_inclusive = false;
-  bool ending = false;  // the inclusive end line was read: the next read ends the pass
+  // The text this level reads: the file, cut after the last line of its archived program or of
+  // its repeated section, so that the end-of-text test of nextLine ends the level there too
+  // (no extra test per block).
+  std::string_view text;
   // A program section repetition (REPEAT/REPEATB; PM-JP "Program section repetition"): a level
   // of its own over the same program, without variables of its own.
   bool section = false;
   lang::TextPos section_start;
-  size_t section_end = kNoOffset;
 };
 
 // A program section to repeat: its first line and the line it ends at.
@@ -93,9 +99,7 @@ class ProgramFlow {
   bool nextLine(std::string_view& text, lang::TextPos& at) {
     ProgramLevel& lvl = levels_.back();
     at = lvl.pos;
-    if (at.offset == lvl.watch) [[unlikely]]
-      return watchedLine(lvl, text);
-    return lang::nextLine(lvl.program->source->text(), lvl.pos, text);
+    return lang::nextLine(lvl.text, lvl.pos, text);
   }
   // A subprogram call with pass count P (alarms 14012 too deep, 12160 pass count, 14011 not
   // found).
@@ -115,6 +119,10 @@ class ProgramFlow {
   // Whether M2/M30 in the current level ends the whole program: the level is the main
   // program or a section repeated in it.
   bool inMainProgram() const;
+  // An init file that is an archive of several sections (`%_N_SGUD_DEF`, `%_N_TO_INI`, ...):
+  // after the end (M17/M30) of one section the next `%` header is read. False when none
+  // follows.
+  bool nextSection();
   // The label lines of `label` in the current program (nullptr if there is none).
   const std::vector<lang::TextPos>* labelLines(std::string_view label) const;
 
@@ -144,7 +152,6 @@ class ProgramFlow {
 
  private:
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
-  bool watchedLine(ProgramLevel& lvl, std::string_view& text);
   LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
   LoadedProgram& loadRange(std::shared_ptr<lang::SourceFile> source, lang::TextPos begin,
                            size_t end);

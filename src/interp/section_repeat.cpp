@@ -4,6 +4,7 @@
 // "Program section repetition".
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "interp/interpreter.hpp"
@@ -15,17 +16,6 @@ using lang::TextPos;
 
 // --- ProgramFlow ----------------------------------------------------------------------------
 
-// The current level reached its watched line: the end of its archived program or of its
-// section. Rare (once per pass), so off the per-block path.
-bool ProgramFlow::watchedLine(ProgramLevel& lvl, std::string_view& text) {
-  if (!lvl.watch_inclusive || lvl.ending) return false;
-  // The end line of the section still runs; the read after it ends the pass.
-  lvl.ending = true;
-  bool more = lang::nextLine(lvl.program->source->text(), lvl.pos, text);
-  lvl.watch = lvl.pos.offset;
-  return more;
-}
-
 void ProgramFlow::repeatSection(const Section& s, long long count) {
   if (static_cast<int>(levels_.size()) >= limits_.max_program_levels)
     raise(AlarmNumber::SubprogramDepth,
@@ -35,16 +25,22 @@ void ProgramFlow::repeatSection(const Section& s, long long count) {
   if (count < 1 || count > 9999)
     raise(AlarmNumber::ValueRange,
           fmt::format("value range exceeded: P={} (pass count 1..9999)", count));
-  ProgramLevel lvl;
-  lvl.program = levels_.back().program;
+  ProgramLevel lvl(*levels_.back().program);
   lvl.pos = s.start;
   lvl.repeat_left = count - 1;
   lvl.defs_allowed = false;
   lvl.section = true;
   lvl.section_start = s.start;
-  lvl.section_end = s.end;
-  lvl.watch = s.end;
-  lvl.watch_inclusive = s.inclusive;
+  // The section's text ends before its end line, or (inclusive) after it: reading past it ends
+  // the pass, like the end of a file ends a subprogram.
+  size_t end = s.end;
+  if (s.inclusive) {
+    TextPos after{s.end, 0};
+    std::string_view skip;
+    lang::nextLine(lvl.program->source->text(), after, skip);
+    end = after.offset;
+  }
+  lvl.text = textUpTo(*lvl.program, std::min(end, lvl.program->end));
   levels_.push_back(lvl);
 }
 
@@ -145,8 +141,8 @@ void Interpreter::endWord(bool program_end) {
     return;
   }
   if (flow_.depth() > 1)
-    returnFromSubprogram();  // M2/M30 in a subprogram act like M17
-  else
+    returnFromSubprogram();                      // M2/M30 in a subprogram act like M17
+  else if (!init_file_ || !flow_.nextSection())  // an init archive goes on with its next section
     endProgram();
 }
 

@@ -5,6 +5,7 @@
 // tests `empty()` once per block).
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -33,8 +34,16 @@ class MacroTable {
   bool expand(std::string_view line, std::string& out, size_t max_length) const;
 
  private:
+  void index();  // first_ and max_length_ from macros_
+
   std::unordered_map<std::string, std::string, StringHash, std::equal_to<>> macros_;
   std::vector<std::string> local_;  // macros of the current run
+  // Quick rejection, so that a program run with a machine's macro file pays little for the
+  // words that are no macros (G1, X10, ...): the first letters of the names, their longest.
+  std::array<bool, 128> first_{};
+  std::array<bool, 256> trigger_{};  // the first letters in both cases: a line without any
+                                     // of them holds no macro
+  size_t max_length_ = 0;
 };
 
 }  // namespace ncoffset::lang
