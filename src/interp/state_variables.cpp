@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <iterator>
 
 #include "interp/interpreter.hpp"
 #include "ncoffset/alarm.hpp"
@@ -87,8 +88,36 @@ int Interpreter::gGroupIndex(int group) const {
   }
 }
 
+// The workpiece counters (PM-JP system variables; FM K1 "Workpiece counter"): channel variables a
+// program reads and writes (the count of parts made), no effect on the path. They start at 0.
+double* Interpreter::partCounter(std::string_view name) {
+  static constexpr std::string_view kNames[] = {"$AC_TOTAL_PARTS", "$AC_REQUIRED_PARTS",
+                                                "$AC_ACTUAL_PARTS", "$AC_SPECIAL_PARTS"};
+  for (size_t i = 0; i < std::size(kNames); ++i)
+    if (name == kNames[i]) return &part_counters_[i];
+  return nullptr;
+}
+
 bool Interpreter::readState(std::string_view name, std::span<const Value> idx, bool indexed,
                             Value& out) {
+  if (const double* counter = partCounter(name)) {
+    if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
+    out = Value::integer(*counter);
+    return true;
+  }
+  if (name == "$P_AXN1" || name == "$P_AXN2" || name == "$P_AXN3") {
+    // The abscissa, ordinate and applicate of the working plane (G17 X Y Z, G18 Z X Y,
+    // G19 Y Z X) as AXIS values.
+    static constexpr const char* kAxes[3][3] = {{"X", "Y", "Z"}, {"Z", "X", "Y"}, {"Y", "Z", "X"}};
+    if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
+    out = {lang::Type::Axis, 0, kAxes[static_cast<int>(modal_.plane)][name[6] - '1'], {}};
+    return true;
+  }
+  if (name == "$P_SEARCH") {
+    if (indexed) raise(AlarmNumber::ArrayIndex1, "$P_SEARCH takes no index");
+    out = Value::integer(0);  // no block search: ncoffset runs the program from its start
+    return true;
+  }
   if (name == "$AA_IW" || name == "$AA_IM") {
     if (!indexed || idx.size() != 1)
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
