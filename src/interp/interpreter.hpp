@@ -122,7 +122,7 @@ class Interpreter final : public lang::Environment {
   bool readState(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                  lang::Value& out);
   double* partCounter(std::string_view name);
-  void mainRunStop(std::string_view name);
+  Vec3 mainRunStop();
   int gGroupIndex(int group) const;
 
   RunOptions options_;

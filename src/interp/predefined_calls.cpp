@@ -87,14 +87,19 @@ Value Interpreter::isVar(std::span<const Value> args) {
     return Value::boolean(std::stod(name.substr(1)) < static_cast<double>(vars_.rCount()));
   if (vars_.find(name) || data_.find(name) >= 0) return Value::boolean(true);
   if (name.empty() || name[0] != '$') return Value::boolean(false);
-  // A system variable: known when reading it is no 12550 (an index alarm means it exists).
-  try {
-    Value v;
-    Value index = Value::symbol("X");
-    return Value::boolean(read(name, {}, false, v) || read(name, {&index, 1}, true, v));
-  } catch (const AlarmError& e) {
-    return Value::boolean(e.alarm() != AlarmNumber::NameNotDefined);
+  // A system variable: known when one of the read forms (no index, [X], [1]) gives a value or
+  // an alarm other than 12550 (an index alarm means the name exists).
+  const Value forms[2] = {Value::symbol("X"), Value::integer(1)};
+  for (int form = 0; form < 3; ++form) {
+    try {
+      Value v;
+      if (form == 0 ? read(name, {}, false, v) : read(name, {&forms[form - 1], 1}, true, v))
+        return Value::boolean(true);
+    } catch (const AlarmError& e) {
+      if (e.alarm() != AlarmNumber::NameNotDefined) return Value::boolean(true);
+    }
   }
+  return Value::boolean(false);
 }
 
 }  // namespace ncoffset::interp
