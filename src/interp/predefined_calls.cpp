@@ -33,7 +33,14 @@ namespace {
 
 bool Interpreter::predefinedWord(std::string_view name) {
   const PredefinedName* p = findPredefinedName(name);
-  if (!p || (p->cycle && programExists(name))) return false;
+  if (!p) {
+    // SETINT(3) PRIO=1 RETRACT: the name is the interrupt routine, assigned, not called (PM-JP
+    // "Interrupt routines"); interrupts are never triggered here.
+    for (const lang::Stmt& st : block_.stmts)
+      if (st.kind == lang::StmtKind::ProcCall && st.name == "SETINT") return true;
+    return false;
+  }
+  if (p->cycle && programExists(name)) return false;
   if (p->cls == NameClass::NotModelled) notModelledName(*p, name);
   if (name == "SETAL") raise(AlarmNumber::WrongCallParams, "SETAL needs an alarm number");
   return true;
