@@ -123,6 +123,8 @@ class Interpreter final : public lang::Environment {
                  lang::Value& out);
   double* partCounter(std::string_view name);
   Vec3 mainRunStop();
+  // ARRAY[i]=SET(..) / ARRAY[i]=REP(..) (array_assign.cpp).
+  bool arrayListAssign(const lang::Stmt& st);
   int gGroupIndex(int group) const;
 
   RunOptions options_;
