@@ -1,19 +1,28 @@
-// The predefined names without code of their own (interp/predefined_names.hpp, docs/names.md):
+// The predefined names without code of their own (lang/predefined_names.hpp, docs/names.md):
 // what a bare name, a call, an assignment or a read of one does, SETAL (PM-JP "Programming
 // alarms") and ISVAR (PM-JP "Check availability of a variable").
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "core/not_modelled.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/predefined_names.hpp"
+#include "lang/predefined_names.hpp"
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::interp {
 
+using lang::findPredefinedName;
+using lang::NameClass;
+using lang::PredefinedName;
 using lang::Value;
 
 namespace {
+
+// Alarm 99010 for a (c) name: "NAME is not modelled by ncoffset: why".
+[[noreturn]] void notModelledName(const PredefinedName& p, std::string_view written) {
+  core::notModelled(written, p.why);
+}
 
 // SETAL(number[, text]): the cycle alarms are 60000..69999 (PM-JP "SETAL"); the program stops
 // with the alarm, as on the control (its reaction is the cycle alarm's: NC stop).

@@ -1,14 +1,12 @@
-// The table of predefined names (interp/predefined_names.hpp), in the order of
+// The table of predefined names (lang/predefined_names.hpp), in the order of
 // std::string_view's comparison; docs/names.md lists the same rows (tests/interp/
 // predefined_names_test.cpp checks that they agree).
-#include "interp/predefined_names.hpp"
+#include "lang/predefined_names.hpp"
 
 #include <algorithm>
 #include <iterator>
 
-#include "core/not_modelled.hpp"
-
-namespace ncoffset::interp {
+namespace ncoffset::lang {
 namespace {
 
 constexpr PredefinedName kNames[] = {
@@ -417,10 +415,6 @@ const PredefinedName* findPredefinedName(std::string_view name) {
   return best;
 }
 
-void notModelledName(const PredefinedName& p, std::string_view written) {
-  core::notModelled(written, p.why);
-}
-
 const PredefinedName* predefinedNamesBegin() {
   return std::begin(kNames);
 }
@@ -428,4 +422,4 @@ const PredefinedName* predefinedNamesEnd() {
   return std::end(kNames);
 }
 
-}  // namespace ncoffset::interp
+}  // namespace ncoffset::lang
