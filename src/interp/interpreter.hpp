@@ -118,6 +118,7 @@ class Interpreter final : public lang::Environment {
   // Reading a (c) name: alarm 99010 (false when the table does not know it).
   bool predefinedRead(std::string_view name);
   lang::Value isVar(std::span<const lang::Value> args);
+  void fileErrorZero(std::string_view name);
   // --- position and state reads (state_variables.cpp): $AA_IW, $AA_IM, $P_GG, $P_F ---
   bool readState(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                  lang::Value& out);

@@ -64,8 +64,31 @@ bool Interpreter::predefinedCall(std::string_view name, std::span<const Value> a
   const PredefinedName* p = findPredefinedName(name);
   if (!p || (p->cycle && programExists(name))) return false;
   if (p->cls == NameClass::NotModelled) notModelledName(*p, name);
+  if (name == "WRITE" || name == "DELETE") fileErrorZero(name);
   out = Value::empty();
   return true;
+}
+
+// WRITE(err, "file", "text") / DELETE(err, "file") (PM-JP "Writing / deleting a file"): the
+// control sets the error variable, 0 when the file operation succeeded, which is what the
+// program sees on a machine with its memory in order; ncoffset writes no file.
+void Interpreter::fileErrorZero(std::string_view name) {
+  for (const lang::Stmt& st : block_.stmts) {
+    if (st.kind != lang::StmtKind::ProcCall || st.name != name) continue;
+    const lang::Node& call = block_.node(st.expr);
+    if (call.b < 1)
+      raise(AlarmNumber::WrongCallParams, fmt::format("{} needs its error variable", name));
+    const lang::Node& err = block_.node(block_.arg(call, 0));
+    if (err.kind == lang::NodeKind::Name && err.text.empty())
+      raise(AlarmNumber::WrongCallParams, fmt::format("{} needs its error variable", name));
+    if (err.kind == lang::NodeKind::Name || err.kind == lang::NodeKind::Index ||
+        err.kind == lang::NodeKind::RParam || err.kind == lang::NodeKind::RIndex)
+      store(err, Value::integer(0));
+    else
+      raise(AlarmNumber::WrongCallParams,
+            fmt::format("{}: the first parameter is the error variable (a variable)", name));
+    return;
+  }
 }
 
 bool Interpreter::predefinedAssign(std::string_view name, const Value& v) {

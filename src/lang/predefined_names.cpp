@@ -188,7 +188,8 @@ constexpr PredefinedName kNames[] = {
     {"DELDTG", NameClass::NoPathEffect, false, false, false,
      "delete distance-to-go: acts only with a measuring input (not modelled)"},
     {"DELETE", NameClass::NoPathEffect, false, false, false,
-     "deletes a file in the control's memory (file handling, no motion)"},
+     "deletes a file in the control's memory (file handling, no motion); its error variable is set "
+     "to 0"},
     {"DELTOOLENV", NameClass::NotModelled, false, false, false,
      "tool environments: not modelled yet"},
     {"DISABLE", NameClass::NoPathEffect, false, false, false,
@@ -250,6 +251,8 @@ constexpr PredefinedName kNames[] = {
     {"IPTRLOCK", NameClass::NoPathEffect, false, false, false,
      "marks where a block search may not resume (operator function)"},
     {"IPTRUNLOCK", NameClass::NoPathEffect, false, false, false, "ends IPTRLOCK"},
+    {"ISFILE", NameClass::NotModelled, false, false, false,
+     "whether a file exists in the control's memory: ncoffset does not know it"},
     {"JERKLIM", NameClass::NoPathEffect, false, false, false,
      "jerk limit override: changes how fast the path is travelled (acceleration, jerk, feed "
      "profile), not where"},
@@ -299,6 +302,8 @@ constexpr PredefinedName kNames[] = {
      "point-to-point motion differs from CP only with a transformation (not modelled)"},
     {"PTPG0", NameClass::NoPathEffect, false, false, false,
      "PTP for G0 only with a transformation (not modelled)"},
+    {"READ", NameClass::NotModelled, false, false, false,
+     "reads lines of a file in the control's memory: data ncoffset does not have"},
     {"RND", NameClass::NotModelled, true, false, false,
      "rounding between two blocks: changes the corner; not modelled yet (RND=0 accepted)"},
     {"RNDM", NameClass::NotModelled, true, false, false,
@@ -389,7 +394,8 @@ constexpr PredefinedName kNames[] = {
     {"WORKPIECE", NameClass::NoPathEffect, false, false, true,
      "blank definition for the simulation of the HMI"},
     {"WRITE", NameClass::NoPathEffect, false, false, false,
-     "appends a line to a file in the control's memory (file handling, no motion)"},
+     "appends a line to a file in the control's memory (file handling, no motion); its error "
+     "variable is set to 0 (done), ncoffset writes no file"},
 };
 
 constexpr bool sortedByName() {
