@@ -43,8 +43,10 @@ class Stage {
   virtual void warning(const MotionBlock& at, int number, const std::string& text) = 0;
   // A block that reached the main run without any motion (counts against MD20250 / MD20202).
   virtual void blockWithoutMotion() {}
-  // An explicit preprocessor stop (STOPRE); `alarm`: SD42480 STOP_CUTCOM_STOPRE = 1.
-  virtual void preprocessorStop(bool /*alarm*/) {}
+  // A preprocessor stop (STOPRE, or a main-run variable read); `alarm`: SD42480
+  // STOP_CUTCOM_STOPRE = 1. Returns where the tool stands after it (WCS) when that is not the
+  // programmed end point (active radius compensation ends on the normal, W1 2.4.11).
+  virtual std::optional<Vec3> preprocessorStop(bool /*alarm*/) { return std::nullopt; }
   // End of the program: everything held back is written.
   virtual void flush() {}
 };

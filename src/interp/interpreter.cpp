@@ -323,6 +323,9 @@ void Interpreter::assign(const Stmt& st) {
     collectWord(word);
     return;
   }
+  if (const Node& rhs = block_.node(st.expr);
+      rhs.kind == NodeKind::Call && (rhs.text == "SET" || rhs.text == "REP") && arrayListAssign(st))
+    return;  // ARRAY[i]=SET(..) / REP(..) (array_assign.cpp)
   Value v = eval_.eval(block_, st.expr);
   store(block_.node(st.target), v);
 }

@@ -153,10 +153,14 @@ class Interpreter final : public lang::Environment {
   // Reading a (c) name: alarm 99010 (false when the table does not know it).
   bool predefinedRead(std::string_view name);
   lang::Value isVar(std::span<const lang::Value> args);
+  void fileErrorZero(std::string_view name);
   // --- position and state reads (state_variables.cpp): $AA_IW, $AA_IM, $P_GG, $P_F ---
   bool readState(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                  lang::Value& out);
-  void mainRunStop(std::string_view name);
+  double* partCounter(std::string_view name);
+  Vec3 mainRunStop();
+  // ARRAY[i]=SET(..) / ARRAY[i]=REP(..) (array_assign.cpp).
+  bool arrayListAssign(const lang::Stmt& st);
   int gGroupIndex(int group) const;
 
   RunOptions options_;
@@ -199,6 +203,8 @@ class Interpreter final : public lang::Environment {
 
   FrameState frames_;
   int md_max_disc_ = 0;  // MD20220, looked up once
+  // $AC_TOTAL_PARTS, $AC_REQUIRED_PARTS, $AC_ACTUAL_PARTS, $AC_SPECIAL_PARTS (state_variables.cpp)
+  double part_counters_[4] = {0, 0, 0, 0};
 
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection
   // snapshotted (data, setting data and mirroring act from the next edge selection).

@@ -39,6 +39,8 @@ class MotionBuilder {
   // The tool's position in the MCS where the last block left it ($AA_IM): the BCS point plus
   // the tool length as the axes have taken it up.
   Vec3 mcs() const { return bcs_ + applied_offset_; }
+  // The linear part of the last block's WCS -> BCS map (a WCS difference into the BCS).
+  const Mat3& frameLinear() const { return frame().linear; }
   // $P_APR, $P_AEP, $P_APDV as the smooth approach fed them back.
   const core::ApproachPoints& approachPoints() const { return approach_points_; }
 

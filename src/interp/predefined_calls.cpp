@@ -1,19 +1,28 @@
-// The predefined names without code of their own (interp/predefined_names.hpp, docs/names.md):
+// The predefined names without code of their own (lang/predefined_names.hpp, docs/names.md):
 // what a bare name, a call, an assignment or a read of one does, SETAL (PM-JP "Programming
 // alarms") and ISVAR (PM-JP "Check availability of a variable").
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "core/not_modelled.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/predefined_names.hpp"
+#include "lang/predefined_names.hpp"
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::interp {
 
+using lang::findPredefinedName;
+using lang::NameClass;
+using lang::PredefinedName;
 using lang::Value;
 
 namespace {
+
+// Alarm 99010 for a (c) name: "NAME is not modelled by ncoffset: why".
+[[noreturn]] void notModelledName(const PredefinedName& p, std::string_view written) {
+  core::notModelled(written, p.why);
+}
 
 // SETAL(number[, text]): the cycle alarms are 60000..69999 (PM-JP "SETAL"); the program stops
 // with the alarm, as on the control (its reaction is the cycle alarm's: NC stop).
@@ -33,7 +42,14 @@ namespace {
 
 bool Interpreter::predefinedWord(std::string_view name) {
   const PredefinedName* p = findPredefinedName(name);
-  if (!p || (p->cycle && programExists(name))) return false;
+  if (!p) {
+    // SETINT(3) PRIO=1 RETRACT: the name is the interrupt routine, assigned, not called (PM-JP
+    // "Interrupt routines"); interrupts are never triggered here.
+    for (const lang::Stmt& st : block_.stmts)
+      if (st.kind == lang::StmtKind::ProcCall && st.name == "SETINT") return true;
+    return false;
+  }
+  if (p->cycle && programExists(name)) return false;
   if (p->cls == NameClass::NotModelled) notModelledName(*p, name);
   if (name == "SETAL") raise(AlarmNumber::WrongCallParams, "SETAL needs an alarm number");
   return true;
@@ -48,8 +64,31 @@ bool Interpreter::predefinedCall(std::string_view name, std::span<const Value> a
   const PredefinedName* p = findPredefinedName(name);
   if (!p || (p->cycle && programExists(name))) return false;
   if (p->cls == NameClass::NotModelled) notModelledName(*p, name);
+  if (name == "WRITE" || name == "DELETE") fileErrorZero(name);
   out = Value::empty();
   return true;
+}
+
+// WRITE(err, "file", "text") / DELETE(err, "file") (PM-JP "Writing / deleting a file"): the
+// control sets the error variable, 0 when the file operation succeeded, which is what the
+// program sees on a machine with its memory in order; ncoffset writes no file.
+void Interpreter::fileErrorZero(std::string_view name) {
+  for (const lang::Stmt& st : block_.stmts) {
+    if (st.kind != lang::StmtKind::ProcCall || st.name != name) continue;
+    const lang::Node& call = block_.node(st.expr);
+    if (call.b < 1)
+      raise(AlarmNumber::WrongCallParams, fmt::format("{} needs its error variable", name));
+    const lang::Node& err = block_.node(block_.arg(call, 0));
+    if (err.kind == lang::NodeKind::Name && err.text.empty())
+      raise(AlarmNumber::WrongCallParams, fmt::format("{} needs its error variable", name));
+    if (err.kind == lang::NodeKind::Name || err.kind == lang::NodeKind::Index ||
+        err.kind == lang::NodeKind::RParam || err.kind == lang::NodeKind::RIndex)
+      store(err, Value::integer(0));
+    else
+      raise(AlarmNumber::WrongCallParams,
+            fmt::format("{}: the first parameter is the error variable (a variable)", name));
+    return;
+  }
 }
 
 bool Interpreter::predefinedAssign(std::string_view name, const Value& v) {
@@ -87,14 +126,19 @@ Value Interpreter::isVar(std::span<const Value> args) {
     return Value::boolean(std::stod(name.substr(1)) < static_cast<double>(vars_.rCount()));
   if (vars_.find(name) || data_.find(name) >= 0) return Value::boolean(true);
   if (name.empty() || name[0] != '$') return Value::boolean(false);
-  // A system variable: known when reading it is no 12550 (an index alarm means it exists).
-  try {
-    Value v;
-    Value index = Value::symbol("X");
-    return Value::boolean(read(name, {}, false, v) || read(name, {&index, 1}, true, v));
-  } catch (const AlarmError& e) {
-    return Value::boolean(e.alarm() != AlarmNumber::NameNotDefined);
+  // A system variable: known when one of the read forms (no index, [X], [1]) gives a value or
+  // an alarm other than 12550 (an index alarm means the name exists).
+  const Value forms[2] = {Value::symbol("X"), Value::integer(1)};
+  for (int form = 0; form < 3; ++form) {
+    try {
+      Value v;
+      if (form == 0 ? read(name, {}, false, v) : read(name, {&forms[form - 1], 1}, true, v))
+        return Value::boolean(true);
+    } catch (const AlarmError& e) {
+      if (e.alarm() != AlarmNumber::NameNotDefined) return Value::boolean(true);
+    }
   }
+  return Value::boolean(false);
 }
 
 }  // namespace ncoffset::interp

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <iterator>
 
 #include "interp/interpreter.hpp"
 #include "ncoffset/alarm.hpp"
@@ -29,14 +30,12 @@ int axisIndexOf(const Value& v, std::string_view name) {
 }  // namespace
 
 // An implicit preprocessor stop (PM-JP: main-run variables stop the preprocessing, as STOPRE).
-void Interpreter::mainRunStop(std::string_view name) {
-  first_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
-  if (modal_.trc != core::TrcMode::Off)
-    raise(AlarmNumber::NotModelled,
-          fmt::format("{} is not modelled by ncoffset while radius compensation is active: the "
-                      "tool stands on the normal of the last element, which compensation does not "
-                      "report back",
-                      name));
+// Returns where the tool tip stands (WCS of the last block's frame): the programmed end point,
+// or with radius compensation active the point on the normal where the stop ended the contour.
+Vec3 Interpreter::mainRunStop() {
+  const std::optional<Vec3> moved =
+      first_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
+  return moved ? *moved : motion_.wcs();
 }
 
 // The internal number of the active G function of group `group` (PM-NC "List of G functions":
@@ -87,16 +86,46 @@ int Interpreter::gGroupIndex(int group) const {
   }
 }
 
+// The workpiece counters (PM-JP system variables; FM K1 "Workpiece counter"): channel variables a
+// program reads and writes (the count of parts made), no effect on the path. They start at 0.
+double* Interpreter::partCounter(std::string_view name) {
+  static constexpr std::string_view kNames[] = {"$AC_TOTAL_PARTS", "$AC_REQUIRED_PARTS",
+                                                "$AC_ACTUAL_PARTS", "$AC_SPECIAL_PARTS"};
+  for (size_t i = 0; i < std::size(kNames); ++i)
+    if (name == kNames[i]) return &part_counters_[i];
+  return nullptr;
+}
+
 bool Interpreter::readState(std::string_view name, std::span<const Value> idx, bool indexed,
                             Value& out) {
+  if (const double* counter = partCounter(name)) {
+    if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
+    out = Value::integer(*counter);
+    return true;
+  }
+  if (name == "$P_AXN1" || name == "$P_AXN2" || name == "$P_AXN3") {
+    // The abscissa, ordinate and applicate of the working plane (G17 X Y Z, G18 Z X Y,
+    // G19 Y Z X) as AXIS values.
+    static constexpr const char* kAxes[3][3] = {{"X", "Y", "Z"}, {"Z", "X", "Y"}, {"Y", "Z", "X"}};
+    if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
+    out = {lang::Type::Axis, 0, kAxes[static_cast<int>(modal_.plane)][name[6] - '1'], {}};
+    return true;
+  }
+  if (name == "$P_SEARCH") {
+    if (indexed) raise(AlarmNumber::ArrayIndex1, "$P_SEARCH takes no index");
+    out = Value::integer(0);  // no block search: ncoffset runs the program from its start
+    return true;
+  }
   if (name == "$AA_IW" || name == "$AA_IM") {
     if (!indexed || idx.size() != 1)
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
     const int axis = axisIndexOf(idx[0], name);
-    mainRunStop(name);
-    // The tool tip where the last block left it, seen through the frame active now (a frame
-    // programmed since then changes $AA_IW, as on the control, not the machine position).
-    const Vec3 p = name == "$AA_IW" ? frames_.toWcs(motion_.bcs()) : motion_.mcs();
+    // The tool tip where the last block left it: through the frame of that block into the BCS
+    // and the MCS (with the tool length the axes have taken up), and seen through the frame
+    // active now for $AA_IW (a frame programmed since then changes $AA_IW, as on the control).
+    const Vec3 delta = mainRunStop() - motion_.wcs();  // off the programmed point (compensation)
+    const Vec3 shift = motion_.frameLinear() * delta;
+    const Vec3 p = name == "$AA_IW" ? frames_.toWcs(motion_.bcs() + shift) : motion_.mcs() + shift;
     out = Value::real(p[axis]);
     return true;
   }

@@ -158,6 +158,11 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     return;
   }
   if (tools_.write(name, idx, indexed, v)) return;
+  if (double* counter = partCounter(name)) {  // the workpiece counters (state_variables.cpp)
+    if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
+    *counter = lang::toNumber(v, "workpiece count");
+    return;
+  }
   if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
     raise(AlarmNumber::NameNotDefined, fmt::format("{} can only be read", name));
   bool whole;

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "lang/lexical.hpp"
+#include "lang/predefined_names.hpp"
 
 namespace ncoffset::lang {
 namespace {
@@ -52,7 +53,8 @@ bool isPredefinedName(std::string_view name) {
   if (name.size() == 1) return isLetter(name[0]);  // address letters
   return isAddressWithNumber(name) || isExtendedAddress(name) || isControlKeyword(name) ||
          jumpKind(name) != lang::JumpKind::None ||
-         std::binary_search(std::begin(kPredefined), std::end(kPredefined), name);
+         std::binary_search(std::begin(kPredefined), std::end(kPredefined), name) ||
+         findPredefinedName(name) != nullptr;  // SOFTA, ADIS, TOFFL, CYCLE81, ... (names.md)
 }
 
 const char* variableNameProblem(std::string_view name) {

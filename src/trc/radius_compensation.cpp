@@ -162,8 +162,8 @@ void RadiusCompensation::flushAll() {
   window_.clear();
 }
 
-void RadiusCompensation::preprocessorStop(bool alarm) {
-  if (state_ == State::Off) return;
+std::optional<Vec3> RadiusCompensation::preprocessorStop(bool alarm) {
+  if (state_ == State::Off) return std::nullopt;
   if (alarm)
     raise(AlarmNumber::TrcPreprocessorStop,
           "preprocessor stop with active tool radius compensation (SD42480 = 1)");
@@ -171,6 +171,7 @@ void RadiusCompensation::preprocessorStop(bool alarm) {
   // point in the start point is approached in the first block after a preprocessing stop."
   // (FM-W1 08/2005 2.4.11). The contour may be violated, as the manual warns.
   Piece anchor;
+  std::optional<Vec3> stands;  // the end of the last block written: where the tool stands
   if (state_ == State::Selecting) {
     const double r = std::fabs(settings_.radius);
     anchor = compensate(selection_, r, r);
@@ -179,12 +180,16 @@ void RadiusCompensation::preprocessorStop(bool alarm) {
     approach.p1 = anchor.compensated.p1;
     emit(detail::keepTipAt(toBlock(selection_, approach), core::kTipEnd));
     for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
+    stands = atPoint(waiting_.empty() ? selection_ : waiting_.back(), approach.p1).end;
     waiting_.clear();
     state_ = State::On;
     count_ = 0;
   } else {
     anchor = window_.back();
     flushAll();
+    stands = atPoint(anchor.waiting.empty() ? anchor.block : anchor.waiting.back(),
+                     anchor.compensated.p1)
+                 .end;
   }
   anchor.emitted = true;
   anchor.waiting.clear();
@@ -192,6 +197,7 @@ void RadiusCompensation::preprocessorStop(bool alarm) {
   window_.clear();
   window_.pushBack() = std::move(anchor);
   restart_next_ = true;
+  return stands;
 }
 
 void RadiusCompensation::flush() {

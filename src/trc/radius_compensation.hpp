@@ -44,7 +44,7 @@ class RadiusCompensation final : public core::Stage {
   // A preprocessor stop (STOPRE) while active (W1 2.4.11): the last element ends on its normal
   // at its end point, the next block approaches the normal point at its start; with SD42480
   // STOP_CUTCOM_STOPRE = 1 alarm 10778 instead.
-  void preprocessorStop(bool alarm) override;
+  std::optional<Vec3> preprocessorStop(bool alarm) override;
   bool active() const { return state_ != State::Off; }
 
  private:

@@ -257,12 +257,12 @@ void SmoothApproach::blockWithoutMotion() {
                       sar_.sar.max_dummy_blocks));
 }
 
-void SmoothApproach::preprocessorStop(bool alarm) {
+std::optional<Vec3> SmoothApproach::preprocessorStop(bool alarm) {
   if (state_ != State::Idle)
     raise(AlarmNumber::SarPreprocessorStop,
           "SAR: preprocessor stop between the SAR block and the block that defines the "
           "approach direction");
-  out_.preprocessorStop(alarm);
+  return out_.preprocessorStop(alarm);
 }
 
 void SmoothApproach::flush() {

@@ -29,7 +29,7 @@ class SmoothApproach final : public core::Stage {
   void blockWithoutMotion() override;
   // STOPRE (explicit preprocessor stop): not allowed between an approach block and the block
   // that defines its tangent.
-  void preprocessorStop(bool alarm) override;
+  std::optional<Vec3> preprocessorStop(bool alarm) override;
   void flush() override;
 
  private:

@@ -23,7 +23,10 @@ class CollectStage final : public core::Stage {
   }
   void warning(const core::MotionBlock&, int, const std::string&) override {}
   void blockWithoutMotion() override { ++without_motion; }
-  void preprocessorStop(bool) override { ++stops; }
+  std::optional<Vec3> preprocessorStop(bool) override {
+    ++stops;
+    return std::nullopt;
+  }
   void flush() override { ++flushes; }
 };
 

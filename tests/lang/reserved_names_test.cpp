@@ -23,13 +23,15 @@ int defAlarm(const std::string& text) {
 }
 
 TEST(ReservedNames, AddressesKeywordsAndPredefinedNames) {
-  for (const char* name :
-       {"X",       "F",      "R",       "X1",     "R5",    "G17",    "I1",  "MD20270",
-        "SD42940", "CR",     "AR",      "DISC",   "TURN",  "IF",     "DEF", "GOTOF",
-        "CASE",    "PROC",   "NOT",     "B_AND",  "DIV",   "TRUE",   "INT", "STRING",
-        "SIN",     "ATAN2",  "CTRANS",  "AC",     "IC",    "MSG",    "SET", "REP",
-        "TO",      "OF",     "DEFAULT", "NORM",   "CDON",  "SUPA",   "RET", "TRANS",
-        "AROT",    "STOPRE", "BRISK",   "TRAORI", "MCALL", "LENTOAX"})
+  for (const char*
+           name : {"X",       "F",       "R",      "X1",       "R5",    "G17",    "I1",
+                   "MD20270", "SD42940", "CR",     "AR",       "DISC",  "TURN",   "IF",
+                   "DEF",     "GOTOF",   "CASE",   "PROC",     "NOT",   "B_AND",  "DIV",
+                   "TRUE",    "INT",     "STRING", "SIN",      "ATAN2", "CTRANS", "AC",
+                   "IC",      "MSG",     "SET",    "REP",      "TO",    "OF",     "DEFAULT",
+                   "NORM",    "CDON",    "SUPA",   "RET",      "TRANS", "AROT",   "STOPRE",
+                   "BRISK",   "TRAORI",  "MCALL",  "LENTOAX",  "ADIS",  "SOFTA",  "TOFFL",
+                   "DL",      "CYCLE81", "SETAL",  "WORKPIECE"})  // the last: names.md's table
     EXPECT_TRUE(isPredefinedName(name)) << name;
   for (const char* name : {"LEN", "CNT2", "XPOS", "R_MAX", "MDX", "SDA1", "_COORD", "ABC", "DEFX",
                            "IFX", "CR1A", "X1A"})

@@ -4,12 +4,13 @@
 // effect on the path (SOFT, COMPCAD, WAITM, ...), or (c) changing the path and not modelled
 // (alarm 99010 naming it and why). A name in none of the classes is unknown (alarm 12550), as
 // on the control. Looked up only for names that are no address letter and that the interpreter
-// does not know otherwise: the plain block never gets here.
+// does not know otherwise: the plain block never gets here. A DEF may not define one of them
+// (reserved_names.cpp).
 #pragma once
 
 #include <string_view>
 
-namespace ncoffset::interp {
+namespace ncoffset::lang {
 
 enum class NameClass : unsigned char { Modelled, NoPathEffect, NotModelled };
 
@@ -25,13 +26,10 @@ struct PredefinedName {
 // The row of `name` (upper case), or nullptr.
 const PredefinedName* findPredefinedName(std::string_view name);
 
-// Raises alarm 99010 for a (c) name: "NAME is not modelled by ncoffset: why".
-[[noreturn]] void notModelledName(const PredefinedName& p, std::string_view written);
+}  // namespace ncoffset::lang
 
-}  // namespace ncoffset::interp
-
-namespace ncoffset::interp {
+namespace ncoffset::lang {
 // The whole table (for the test that compares it with docs/names.md).
 const PredefinedName* predefinedNamesBegin();
 const PredefinedName* predefinedNamesEnd();
-}  // namespace ncoffset::interp
+}  // namespace ncoffset::lang

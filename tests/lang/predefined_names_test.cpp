@@ -1,6 +1,6 @@
-// The table of predefined names (interp/predefined_names.*): lookups, prefixes, and that
+// The table of predefined names (lang/predefined_names.*): lookups, prefixes, and that
 // docs/names.md lists every row with the same class.
-#include "interp/predefined_names.hpp"
+#include "lang/predefined_names.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-namespace ncoffset::interp {
+namespace ncoffset::lang {
 namespace {
 
 TEST(PredefinedNames, FindsExactNamesAndFamilies) {
@@ -62,4 +62,4 @@ TEST(PredefinedNames, DocsListEveryRowWithItsClass) {
 }
 
 }  // namespace
-}  // namespace ncoffset::interp
+}  // namespace ncoffset::lang

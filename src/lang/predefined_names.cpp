@@ -1,14 +1,12 @@
-// The table of predefined names (interp/predefined_names.hpp), in the order of
+// The table of predefined names (lang/predefined_names.hpp), in the order of
 // std::string_view's comparison; docs/names.md lists the same rows (tests/interp/
 // predefined_names_test.cpp checks that they agree).
-#include "interp/predefined_names.hpp"
+#include "lang/predefined_names.hpp"
 
 #include <algorithm>
 #include <iterator>
 
-#include "core/not_modelled.hpp"
-
-namespace ncoffset::interp {
+namespace ncoffset::lang {
 namespace {
 
 constexpr PredefinedName kNames[] = {
@@ -18,6 +16,8 @@ constexpr PredefinedName kNames[] = {
      "main-run channel state: not modelled (except the ones in this table)"},
     {"$AC_TIME", NameClass::NotModelled, false, false, false,
      "main-run time since the block start: not modelled"},
+    {"$A_", NameClass::NotModelled, false, true, false,
+     "inputs, outputs, PLC data and the clock of the machine: values ncoffset does not have"},
     {"$TC_CARR", NameClass::NotModelled, true, true, false,
      "tool carrier data: not modelled yet; 0 is accepted (init files)"},
     {"$TC_ECP", NameClass::NotModelled, true, true, false,
@@ -33,6 +33,8 @@ constexpr PredefinedName kNames[] = {
      "ADIS; ncoffset outputs the programmed (compensated) corner it starts from"},
     {"ADISPOS", NameClass::NoPathEffect, false, false, false,
      "rounding distance for G0 blocks (as ADIS)"},
+    {"ALF", NameClass::NoPathEffect, false, false, false,
+     "lift-off direction of LIFTFAST (an interrupt, never triggered here)"},
     {"ANG", NameClass::NotModelled, false, false, false,
      "contour definition by angle: not modelled yet"},
     {"AP", NameClass::NotModelled, false, false, false,
@@ -42,12 +44,16 @@ constexpr PredefinedName kNames[] = {
     {"BRISKA", NameClass::NoPathEffect, false, false, false,
      "acceleration profile of positioning axes: changes how fast the path is travelled "
      "(acceleration, jerk, feed profile), not where"},
+    {"CALCDAT", NameClass::NotModelled, false, false, false,
+     "computes a circle from points; its results steer the program: not modelled yet"},
     {"CHF", NameClass::NotModelled, true, false, false,
      "chamfer between two blocks: changes the corner; not modelled yet (CHF=0 accepted)"},
     {"CHR", NameClass::NotModelled, true, false, false,
      "chamfer between two blocks: changes the corner; not modelled yet (CHR=0 accepted)"},
     {"CLEARM", NameClass::NoPathEffect, false, false, false,
      "clears channel wait marks (channel synchronisation; one channel here)"},
+    {"CLRINT", NameClass::NoPathEffect, false, false, false,
+     "clears an interrupt assignment (interrupts are never triggered here)"},
     {"COMPCAD", NameClass::NoPathEffect, false, false, false,
      "compressor: the interpolator replaces G1 blocks by polynomials within the tolerance CTOL; "
      "ncoffset outputs the programmed points"},
@@ -182,9 +188,12 @@ constexpr PredefinedName kNames[] = {
     {"DELDTG", NameClass::NoPathEffect, false, false, false,
      "delete distance-to-go: acts only with a measuring input (not modelled)"},
     {"DELETE", NameClass::NoPathEffect, false, false, false,
-     "deletes a file in the control's memory (file handling, no motion)"},
+     "deletes a file in the control's memory (file handling, no motion); its error variable is set "
+     "to 0"},
     {"DELTOOLENV", NameClass::NotModelled, false, false, false,
      "tool environments: not modelled yet"},
+    {"DISABLE", NameClass::NoPathEffect, false, false, false,
+     "disables an interrupt (interrupts are never triggered here)"},
     {"DISPLOF", NameClass::NoPathEffect, false, false, false,
      "block display off (operator display)"},
     {"DISPLON", NameClass::NoPathEffect, false, false, false,
@@ -202,6 +211,12 @@ constexpr PredefinedName kNames[] = {
     {"DRIVEA", NameClass::NoPathEffect, false, false, false,
      "acceleration profile of positioning axes: changes how fast the path is travelled "
      "(acceleration, jerk, feed profile), not where"},
+    {"ENABLE", NameClass::NoPathEffect, false, false, false,
+     "enables an interrupt (interrupts are never triggered here)"},
+    {"EXECSTRING", NameClass::NotModelled, false, false, false,
+     "runs a string as a block: not modelled yet"},
+    {"EXECTAB", NameClass::NotModelled, false, false, false,
+     "runs a table of contour elements: not modelled yet"},
     {"FA", NameClass::NoPathEffect, false, false, false,
      "feed of a positioning axis; positioning axes other than X, Y, Z are not modelled (99010 when "
      "one moves)"},
@@ -233,9 +248,20 @@ constexpr PredefinedName kNames[] = {
     {"GROUP_BEGIN", NameClass::NoPathEffect, false, false, false,
      "marks a group of blocks for the program editor"},
     {"GROUP_END", NameClass::NoPathEffect, false, false, false, "end of GROUP_BEGIN"},
+    {"IPTRLOCK", NameClass::NoPathEffect, false, false, false,
+     "marks where a block search may not resume (operator function)"},
+    {"IPTRUNLOCK", NameClass::NoPathEffect, false, false, false, "ends IPTRLOCK"},
+    {"ISFILE", NameClass::NotModelled, false, false, false,
+     "whether a file exists in the control's memory: ncoffset does not know it"},
     {"JERKLIM", NameClass::NoPathEffect, false, false, false,
      "jerk limit override: changes how fast the path is travelled (acceleration, jerk, feed "
      "profile), not where"},
+    {"LIFTFAST", NameClass::NoPathEffect, false, false, false,
+     "fast lift-off on an interrupt (interrupts are never triggered here)"},
+    {"MEAS", NameClass::NotModelled, false, false, false,
+     "measuring with a probe: the block ends where the probe triggers; not modelled"},
+    {"MEAW", NameClass::NotModelled, false, false, false,
+     "measuring with a probe without deleting the distance to go: not modelled"},
     {"ORIAXES", NameClass::NoPathEffect, false, false, false,
      "orientation interpolation of a 5-axis transformation; without TRAORI (99010) no effect"},
     {"ORIEULER", NameClass::NoPathEffect, false, false, false,
@@ -268,10 +294,16 @@ constexpr PredefinedName kNames[] = {
      "positioning axis motion: axes other than X, Y, Z are not modelled"},
     {"POSA", NameClass::NotModelled, false, false, false,
      "positioning axis motion over block limits: not modelled"},
+    {"PRESETON", NameClass::NotModelled, false, false, false,
+     "sets the actual value of an axis (a new machine coordinate): not modelled"},
+    {"PRIO", NameClass::NoPathEffect, false, false, false,
+     "priority of an interrupt routine (SETINT; never triggered here)"},
     {"PTP", NameClass::NoPathEffect, false, false, false,
      "point-to-point motion differs from CP only with a transformation (not modelled)"},
     {"PTPG0", NameClass::NoPathEffect, false, false, false,
      "PTP for G0 only with a transformation (not modelled)"},
+    {"READ", NameClass::NotModelled, false, false, false,
+     "reads lines of a file in the control's memory: data ncoffset does not have"},
     {"RND", NameClass::NotModelled, true, false, false,
      "rounding between two blocks: changes the corner; not modelled yet (RND=0 accepted)"},
     {"RNDM", NameClass::NotModelled, true, false, false,
@@ -290,8 +322,12 @@ constexpr PredefinedName kNames[] = {
     {"SETAL", NameClass::Modelled, false, false, false,
      "sets the cycle alarm it names (60000..69999): the program stops with that alarm, as on the "
      "control"},
+    {"SETINT", NameClass::NoPathEffect, false, false, false,
+     "assigns an interrupt routine to an input (never triggered here)"},
     {"SETM", NameClass::NoPathEffect, false, false, false,
      "sets channel wait marks (one channel here)"},
+    {"SETPIECE", NameClass::NoPathEffect, false, false, false,
+     "piece count of the tool management"},
     {"SETTCOR", NameClass::NotModelled, false, false, false, "tool environments: not modelled yet"},
     {"SF", NameClass::NoPathEffect, false, false, false,
      "start angle of a thread (G33, itself not modelled)"},
@@ -303,8 +339,12 @@ constexpr PredefinedName kNames[] = {
     {"SPCOF", NameClass::NoPathEffect, false, false, false, "spindle back to speed control"},
     {"SPCON", NameClass::NoPathEffect, false, false, false, "spindle in position control"},
     {"STARTFIFO", NameClass::NoPathEffect, false, false, false, "preprocessing buffer control"},
+    {"STAT", NameClass::NotModelled, false, false, false,
+     "position of the joints for a transformation (PTP): not modelled"},
     {"STOLF", NameClass::NoPathEffect, false, false, false, "G0 tolerance factor of the smoothing"},
     {"STOPFIFO", NameClass::NoPathEffect, false, false, false, "preprocessing buffer control"},
+    {"STOPREOF", NameClass::NoPathEffect, false, false, false,
+     "ends a preprocessor stop that a synchronized action set (none here)"},
     {"TCARR", NameClass::NotModelled, true, false, false,
      "orientable tool holder (tool carrier): not modelled yet; TCARR=0 (none) is accepted"},
     {"TCOABS", NameClass::Modelled, false, false, false,
@@ -333,6 +373,8 @@ constexpr PredefinedName kNames[] = {
     {"TOROTX", NameClass::NotModelled, false, false, false, "as TOROT: not modelled yet"},
     {"TOROTY", NameClass::NotModelled, false, false, false, "as TOROT: not modelled yet"},
     {"TOROTZ", NameClass::NotModelled, false, false, false, "as TOROT: not modelled yet"},
+    {"TU", NameClass::NotModelled, false, false, false,
+     "turn of the axes for a transformation (PTP): not modelled"},
     {"UPATH", NameClass::NoPathEffect, false, false, false,
      "feed reference of FGROUP axes (curve parameter)"},
     {"VELOLIM", NameClass::NoPathEffect, false, false, false,
@@ -345,10 +387,15 @@ constexpr PredefinedName kNames[] = {
     {"WAITMC", NameClass::NoPathEffect, false, false, false,
      "conditional wait mark (one channel here)"},
     {"WAITS", NameClass::NoPathEffect, false, false, false, "waits for spindle positioning"},
+    {"WALIMOF", NameClass::NoPathEffect, false, false, false,
+     "working-area limitation off (a monitoring, not the path)"},
+    {"WALIMON", NameClass::NoPathEffect, false, false, false,
+     "working-area limitation on (a monitoring, not the path)"},
     {"WORKPIECE", NameClass::NoPathEffect, false, false, true,
      "blank definition for the simulation of the HMI"},
     {"WRITE", NameClass::NoPathEffect, false, false, false,
-     "appends a line to a file in the control's memory (file handling, no motion)"},
+     "appends a line to a file in the control's memory (file handling, no motion); its error "
+     "variable is set to 0 (done), ncoffset writes no file"},
 };
 
 constexpr bool sortedByName() {
@@ -374,10 +421,6 @@ const PredefinedName* findPredefinedName(std::string_view name) {
   return best;
 }
 
-void notModelledName(const PredefinedName& p, std::string_view written) {
-  core::notModelled(written, p.why);
-}
-
 const PredefinedName* predefinedNamesBegin() {
   return std::begin(kNames);
 }
@@ -385,4 +428,4 @@ const PredefinedName* predefinedNamesEnd() {
   return std::end(kNames);
 }
 
-}  // namespace ncoffset::interp
+}  // namespace ncoffset::lang
