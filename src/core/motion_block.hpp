@@ -21,18 +21,19 @@ enum TipAt : std::uint8_t { kTipNone = 0, kTipStart = 1, kTipEnd = 2, kTipBoth =
 
 struct MotionBlock {
   Motion motion = Motion::G1;
-  Vec3 start;         // WCS
-  Vec3 end;           // WCS
-  Vec3 centre;        // WCS, arcs
-  int applicate = 2;  // arcs: index of the axis perpendicular to the plane (G17: Z)
+  // (The two flags fill the padding after `motion`.)
+  bool has_tip = false;            // the active edge has P != S (turning tool SL 1..8)
+  std::uint8_t tip_at = kTipNone;  // set by radius compensation only
+  Vec3 start;                      // WCS
+  Vec3 end;                        // WCS
+  Vec3 centre;                     // WCS, arcs
+  int applicate = 2;               // arcs: index of the axis perpendicular to the plane (G17: Z)
   Plane plane = Plane::G17;
   TrcSettings trc;  // radius compensation of this block
   int turns = 0;
-  BlockFrame frame;      // WCS -> BCS for this block (none with G53/G153/SUPA and programmed MCS)
-  Vec3 tool_offset;      // BCS vector from tool tip to carrier reference point
-  Vec3 tip;              // BCS vector P - S of a turning tool (frame mirroring applied)
-  bool has_tip = false;  // the active edge has P != S (turning tool SL 1..8)
-  std::uint8_t tip_at = kTipNone;  // set by radius compensation only
+  BlockFrame frame;  // WCS -> BCS for this block (none with G53/G153/SUPA and programmed MCS)
+  Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
+  Vec3 tip;          // BCS vector P - S of a turning tool (frame mirroring applied)
   double feed = 0;
   bool has_feed = false;
   int line = 0;
@@ -45,14 +46,14 @@ struct MotionBlock {
 // which saves copying a whole block for every compensated element.
 struct Geometry {
   Motion motion;
+  std::uint8_t tip_at;  // core::TipAt (in the padding after `motion`)
   Vec3 start, end, centre;
   int applicate;
   int turns;
-  std::uint8_t tip_at = kTipNone;
 };
 
 inline Geometry geometryOf(const MotionBlock& m) {
-  return {m.motion, m.start, m.end, m.centre, m.applicate, m.turns, m.tip_at};
+  return {m.motion, m.tip_at, m.start, m.end, m.centre, m.applicate, m.turns};
 }
 
 // A copy of `like` with the geometry `g`.

@@ -174,8 +174,8 @@ NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& 
   t.curve_insert_limit = data_.get(md_insert_limit_);
   t.max_dummy_blocks = static_cast<int>(data_.get(md_dummy_blocks_));
   t.check_blocks = static_cast<int>(data_.get(md_check_blocks_));
+  // (m_.tip_at stays kTipNone: only radius compensation marks the copies it makes.)
   m_.has_tip = tools_.hasTip();  // false for every milling tool: nothing more per block
-  m_.tip_at = core::kTipNone;
   if (m_.has_tip) m_.tip = tipVector(modal.plane);
 }
 

@@ -71,22 +71,15 @@ void ToolSelection::selectEdge(int d, const SelectionContext& ctx) {
 }
 
 void ToolSelection::cache(Plane plane) const {
-  if (edge_.offset_cached && edge_.cached_plane == plane) return;
   edge_.cached_offset = ncoffset::lengthVector(edge_.data, edge_.settings, plane, edge_.mirrored);
   edge_.cached_tip = ncoffset::tipVector(edge_.data, edge_.settings, plane, edge_.radius);
   edge_.cached_plane = plane;
   edge_.offset_cached = true;
 }
 
-Vec3 ToolSelection::lengthVector(Plane plane) const {
-  if (!edge_.valid) return {};
-  cache(plane);
-  return edge_.cached_offset;
-}
-
 Vec3 ToolSelection::tipVector(Plane plane) const {
   if (!edge_.has_tip) return {};
-  cache(plane);
+  if (!cachedFor(plane)) cache(plane);
   return edge_.cached_tip;
 }
 

@@ -50,7 +50,12 @@ class ToolSelection {
   double radius() const { return edge_.valid ? edge_.radius : 0.0; }
   // The BCS vector from the tool tip to the carrier reference point in `plane` (zero without
   // an edge), computed once per selection and plane.
-  Vec3 lengthVector(Plane plane) const;
+  // (Inline: asked for every linear block.)
+  Vec3 lengthVector(Plane plane) const {
+    if (!edge_.valid) return {};
+    if (!cachedFor(plane)) cache(plane);
+    return edge_.cached_offset;
+  }
   // The BCS vector P - S of a turning or grinding edge with SL 1..8 in `plane` (zero otherwise;
   // docs/cutting-edge-positions.md), computed with the length vector, once per selection and
   // plane. `hasTip()`: the active edge has one (false for every milling tool).
@@ -78,8 +83,9 @@ class ToolSelection {
  private:
   void changeTool(int t, bool edge_programmed, const SelectionContext& ctx);
   void selectEdge(int d, const SelectionContext& ctx);
-  // Recomputes the cached length and tip vectors for `plane` when the plane changed.
+  // Recomputes the cached length and tip vectors for `plane` (the plane changed).
   void cache(Plane plane) const;
+  bool cachedFor(Plane plane) const { return edge_.offset_cached && edge_.cached_plane == plane; }
 
   ToolStore tools_;
   size_t max_edges_;

@@ -41,15 +41,8 @@ namespace {
 // The geometry of plane element `e` (program coordinates) as a motion of block `like`.
 NCOFFSET_INLINE_STEP core::Geometry planeGeometry(const MotionBlock& like, const Element& e) {
   PlaneAxes pa = planeAxes(like.plane);
-  // Every point radius compensation makes lies on the path of S (the approach and retraction
-  // lines clear their programmed end: approach_retraction.cpp).
-  core::Geometry g{like.motion,
-                   like.start,
-                   like.end,
-                   like.centre,
-                   like.applicate,
-                   like.turns,
-                   like.has_tip ? core::kTipBoth : core::kTipNone};
+  core::Geometry g{like.motion, core::kTipNone, like.start, like.end,
+                   like.centre, like.applicate, like.turns};
   g.start[pa.abscissa] = e.p0.a;
   g.start[pa.ordinate] = e.p0.o;
   g.end[pa.abscissa] = e.p1.a;
@@ -80,7 +73,11 @@ core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Eleme
 }
 
 MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
-  return core::withGeometry(like, geometry(like, e));
+  MotionBlock b = core::withGeometry(like, geometry(like, e));
+  // Every block compensation makes lies on the path of S: P - S at both ends (the approach and
+  // retraction lines clear one, detail::keepTipAt). Not per element: emitPiece marks those.
+  if (like.has_tip) b.tip_at = core::kTipBoth;
+  return b;
 }
 
 MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const {
@@ -167,10 +164,9 @@ void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
 void RadiusCompensation::emitPiece(const Piece& p) {
   for (const MotionBlock& t : p.transition) emit(t);
   core::Geometry g = geometry(p.block, p.compensated);
-  if (p.approach)
-    g.tip_at = static_cast<std::uint8_t>(g.tip_at &
-                                         core::kTipEnd);  // the approach line starts where P stood
-  out_.element(p.block, g);                               // no copy of the block
+  // On the path of S (the approach line starts where P stood): P - S (cutting-edge-positions.md).
+  if (p.block.has_tip) g.tip_at = p.approach ? core::kTipEnd : core::kTipBoth;
+  out_.element(p.block, g);  // no copy of the block
   for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
 }
 

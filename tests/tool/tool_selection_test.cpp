@@ -101,5 +101,42 @@ TEST(ToolSelection, NoEdgeMeansNoOffset) {
   EXPECT_EQ(s.orientation(Plane::G18).y, 1);  // without an edge: the plane's applicate
 }
 
+TEST(ToolSelection, TurningEdgeGivesPMinusSPerPlane) {
+  // docs/cutting-edge-positions.md: type 500, SL3, R 0.8 -> (-0.8 along L1, -0.8 along L2).
+  ToolSelection s(32000);
+  setEdge(s, 1, 1, 1, 500);
+  setEdge(s, 1, 1, 2, 3);
+  setEdge(s, 1, 1, 3, 100);
+  setEdge(s, 1, 1, 4, 50);
+  setEdge(s, 1, 1, 6, 0.8);
+  setEdge(s, 1, 2, 1, 500);  // D2: SL 9, P = S
+  setEdge(s, 1, 2, 2, 9);
+  setEdge(s, 1, 2, 6, 0.8);
+  SelectionContext ctx;
+  s.execute({1, 1, false}, true, ctx);
+  ASSERT_TRUE(s.hasTip());
+  Vec3 g18 = s.tipVector(Plane::G18);  // L1 -> X, L2 -> Z
+  EXPECT_DOUBLE_EQ(g18.x, -0.8);
+  EXPECT_DOUBLE_EQ(g18.z, -0.8);
+  EXPECT_EQ(s.lengthVector(Plane::G18).x, 100);
+  Vec3 g17 = s.tipVector(Plane::G17);  // L1 -> Y, L2 -> X: the cache follows the plane
+  EXPECT_DOUBLE_EQ(g17.x, -0.8);
+  EXPECT_DOUBLE_EQ(g17.y, -0.8);
+  EXPECT_EQ(g17.z, 0);
+  EXPECT_EQ(s.lengthVector(Plane::G17).y, 100);
+  s.execute({std::nullopt, 2, false}, true, ctx);
+  EXPECT_FALSE(s.hasTip());
+  EXPECT_EQ(s.tipVector(Plane::G18).x, 0);
+  s.execute({std::nullopt, 0, false}, true, ctx);  // D0: no edge
+  EXPECT_FALSE(s.hasTip());
+}
+
+TEST(ToolSelection, MillingEdgeHasNoTip) {
+  ToolSelection s = millingTool();
+  setEdge(s, 1, 1, 2, 3);  // a cutting edge position on an end mill means nothing
+  s.execute({1, std::nullopt, false}, true, SelectionContext{});
+  EXPECT_FALSE(s.hasTip());
+}
+
 }  // namespace
 }  // namespace ncoffset::tool
