@@ -111,9 +111,7 @@ void ProgramFlow::callProgram(LoadedProgram& prog) {
     raise(AlarmNumber::SubprogramDepth,
           fmt::format("maximum subprogram level exceeded: {} program levels (--max-program-levels)",
                       limits_.max_program_levels));
-  ProgramLevel lvl;
-  lvl.program = &prog;
-  levels_.push_back(lvl);
+  levels_.emplace_back(prog);  // CALL BLOCK: the caller then jumps to the section's start
 }
 
 bool ProgramFlow::leave() {
