@@ -23,6 +23,7 @@ struct MotionBlock {
   BlockFrame frame;  // WCS -> BCS for this block (none with G53/G153/SUPA and programmed MCS)
   Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
   double feed = 0;
+  FeedUnit feed_unit = FeedUnit::MmPerMin;  // G group 15 of the block
   bool has_feed = false;
   int line = 0;
   int file = 0;

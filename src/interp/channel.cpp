@@ -13,16 +13,34 @@
 namespace ncoffset {
 
 namespace {
+// The transverse axis as diameter values (--diameter, docs/turning.md): positions and centres
+// times 2. Lines stay lines; an arc's drawing would be an ellipse, which is why the drawings
+// (SVG, HTML) are never asked for it.
+Segment asDiameter(Segment s, int axis) {
+  s.start[axis] *= 2;
+  s.end[axis] *= 2;
+  s.centre[axis] *= 2;
+  return s;
+}
+
 // Forwards to whichever sink the current run writes to.
 class SwitchSink final : public PathSink {
  public:
   PathSink* target = nullptr;
-  void segment(const Segment& s) override { target->segment(s); }
+  int diameter_axis = -1;  // >= 0: that axis as diameter values
+  void segment(const Segment& s) override {
+    if (diameter_axis < 0)
+      target->segment(s);
+    else
+      target->segment(asDiameter(s, diameter_axis));
+  }
   void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
   void warning(const SourceLoc& l, int n, const std::string& t) override {
     target->warning(l, n, t);
   }
-  void programmed(const Segment& s) override { target->programmed(s); }
+  void programmed(const Segment& s) override {
+    target->programmed(diameter_axis < 0 ? s : asDiameter(s, diameter_axis));
+  }
   bool wantsProgrammed() const override { return target && target->wantsProgrammed(); }
   void finish(const Alarm* a) override { target->finish(a); }
 };
@@ -32,7 +50,12 @@ class SwitchSink final : public PathSink {
 // compensation -> placement -> sink. Each stage knows only the one after it.
 struct Channel::Impl {
   explicit Impl(const RunOptions& o)
-      : placement(sink, o.coords), trc(placement), sar(trc), interp(o, sink, sar) {}
+      : diameter_output(o.diameter_output),
+        placement(sink, o.coords),
+        trc(placement),
+        sar(trc),
+        interp(o, sink, sar) {}
+  bool diameter_output;
   SwitchSink sink;
   place::Placement placement;
   trc::RadiusCompensation trc;
@@ -45,6 +68,12 @@ struct Channel::Impl {
     RunResult r;
     try {
       interp::LoadedProgram& prog = interp.load(std::move(src));
+      if (diameter_output && !init) {  // after load: the alarm names the program
+        sink.diameter_axis = interp.transverseAxis();
+        if (sink.diameter_axis < 0)
+          raise(AlarmNumber::NoTransverseAxis,
+                "no transverse axis for --diameter: MD20100 $MC_DIAMETER_AX_DEF names none");
+      }
       interp.run(prog, init);
     } catch (const AlarmError& e) {
       r.status = RunResult::Status::Alarm;

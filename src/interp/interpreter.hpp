@@ -3,6 +3,7 @@
 // placement stage. Program flow per PM-JP "Program flow control" and PM-NC "Subprograms".
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -43,6 +44,8 @@ class Interpreter final : public lang::Environment {
   // The text of the line alarmLoc() names ("" where it is not known).
   std::string alarmSourceLine(const AlarmError& e) const;
   const std::string& fileName(int id) const { return flow_.fileName(id); }
+  // The transverse axis of MD20100 (0 X, 1 Y, 2 Z; -1 none).
+  int transverseAxis() const;
   void writeVariablesJson(std::ostream& out) const;
   void setSearchDir(std::filesystem::path dir) { flow_.setSearchDir(std::move(dir)); }
 
@@ -95,6 +98,22 @@ class Interpreter final : public lang::Environment {
   void doFrameCommand();
   double toMm(double v) const;
 
+  // --- turning (turning.cpp, turning_data.cpp) ---
+  bool diameterWord(std::string_view w);
+  bool diameterAxisCall(std::string_view name, std::span<const lang::Value> args);
+  bool diameterPermitted(int axis) const;
+  void setDiameterMode(DiamMode m, std::string_view word);
+  void updateDiameter();
+  void resetDiameterAxes();
+  double readPosition(double radius_value, int ax) const;
+  void setFeedType(FeedType t);
+  void applyResetValue(int index, int value);
+  int resetIndex(std::span<const lang::Value> idx, bool indexed) const;
+  bool turningDataRead(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                       lang::Value& out);
+  bool turningDataWrite(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                        const lang::Value& v);
+
   // --- tool data and selection (tool_selection.cpp) ---
   void executeToolWords();
   lang::Value callLentoax(std::span<const lang::Value> args);
@@ -104,6 +123,8 @@ class Interpreter final : public lang::Environment {
                   lang::Value& out);
   void writeSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                    const lang::Value& v);
+  // X, Y, Z as 0, 1, 2 (99010 for another axis, 12150 for no axis name).
+  static int axisIndexOf(const lang::Value& v);
   Frame* frameByName(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                      bool& whole);
 
@@ -134,7 +155,10 @@ class Interpreter final : public lang::Environment {
   bool init_file_ = false;
 
   FrameState frames_;
-  int md_max_disc_ = 0;  // MD20220, looked up once
+  int md_max_disc_ = 0;                                // MD20220, looked up once
+  int md_transverse_ = 0, md_base_function_mask_ = 0;  // MD20100, MD30460
+  // MD20150 by G group - 1 (the modelled groups: turning_data.cpp).
+  std::array<int, 60> reset_values_{};
 
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection
   // snapshotted (data, setting data and mirroring act from the next edge selection).
