@@ -66,17 +66,9 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
       raise(AlarmNumber::AddressTwice, fmt::format("address {} programmed too often", name));
     words_.axis[i] = true;
     words_.axis_value[i] = value();
-    words_.axis_mode[i] = st.mode;
-    if (st.mode > AxisMode::IC && !diameterPermitted(i))
-      raise(AlarmNumber::NoTransverseAxis,
-            fmt::format("no transverse axis: DAC/DIC/RAC/RIC need {} as the transverse axis "
-                        "(MD20100) or permitted by MD30460 bit 2",
-                        name));
+    words_.axis_mode[i] = st.mode;  // DAC/DIC/RAC/RIC: checked where applied (MotionBuilder)
     return;
   }
-  if (st.mode > AxisMode::IC)
-    raise(AlarmNumber::SyntaxError,
-          fmt::format("DAC/DIC/RAC/RIC are not allowed with address {}", name));
   if (st.mode != AxisMode::Default && c != 'I' && c != 'J' && c != 'K')
     raise(AlarmNumber::SyntaxError, fmt::format("AC/IC is not allowed with address {}", name));
   switch (c) {
@@ -196,9 +188,6 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
 // An address of more than one letter: CR=, AR=, RPL=, TURN=, DISC=, OFFN=, the SAR words, SPOS.
 NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
   std::string_view name = st.name;
-  if (st.mode > AxisMode::IC)
-    raise(AlarmNumber::SyntaxError,
-          fmt::format("DAC/DIC/RAC/RIC are not allowed with address {}=", name));
   auto value = [&]() { return wordValue(st); };
   if (name == "CR") {
     words_.cr = value();
@@ -244,14 +233,7 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     value();
     return;
   }  // spindle positioning
-  if (name == "LIMS") {
-    // LIMS=: the spindle speed limit of G96/G961 (PM-NC "Constant cutting rate"): no path
-    // effect.
-    const double v = value();
-    if (!(v >= 0 && v <= 1e9))
-      raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: LIMS={}", v));
-    return;
-  }
+  if (turningWord(st)) return;
   notModelled(fmt::format("address {}=", name),
               "this address changes the path and is not modelled");
 }

@@ -27,22 +27,27 @@ Segment asDiameter(Segment s, int axis) {
 class SwitchSink final : public PathSink {
  public:
   PathSink* target = nullptr;
-  int diameter_axis = -1;  // >= 0: that axis as diameter values
-  void segment(const Segment& s) override {
-    if (diameter_axis < 0)
-      target->segment(s);
-    else
-      target->segment(asDiameter(s, diameter_axis));
-  }
+  void segment(const Segment& s) override { target->segment(s); }
   void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
   void warning(const SourceLoc& l, int n, const std::string& t) override {
     target->warning(l, n, t);
   }
-  void programmed(const Segment& s) override {
-    target->programmed(diameter_axis < 0 ? s : asDiameter(s, diameter_axis));
-  }
+  void programmed(const Segment& s) override { target->programmed(s); }
   bool wantsProgrammed() const override { return target && target->wantsProgrammed(); }
   void finish(const Alarm* a) override { target->finish(a); }
+};
+
+// Between SwitchSink and the run's sink with --diameter only (the usual run pays nothing).
+class DiameterSink final : public PathSink {
+ public:
+  PathSink* next = nullptr;
+  int axis = 0;
+  void segment(const Segment& s) override { next->segment(asDiameter(s, axis)); }
+  void message(const SourceLoc& l, const std::string& t) override { next->message(l, t); }
+  void warning(const SourceLoc& l, int n, const std::string& t) override { next->warning(l, n, t); }
+  void programmed(const Segment& s) override { next->programmed(asDiameter(s, axis)); }
+  bool wantsProgrammed() const override { return next && next->wantsProgrammed(); }
+  void finish(const Alarm* a) override { next->finish(a); }
 };
 }  // namespace
 
@@ -56,6 +61,7 @@ struct Channel::Impl {
         sar(trc),
         interp(o, sink, sar) {}
   bool diameter_output;
+  DiameterSink diameter;
   SwitchSink sink;
   place::Placement placement;
   trc::RadiusCompensation trc;
@@ -69,10 +75,12 @@ struct Channel::Impl {
     try {
       interp::LoadedProgram& prog = interp.load(std::move(src));
       if (diameter_output && !init) {  // after load: the alarm names the program
-        sink.diameter_axis = interp.transverseAxis();
-        if (sink.diameter_axis < 0)
+        diameter.axis = interp.transverseAxis();
+        if (diameter.axis < 0)
           raise(AlarmNumber::NoTransverseAxis,
                 "no transverse axis for --diameter: MD20100 $MC_DIAMETER_AX_DEF names none");
+        diameter.next = &out;
+        sink.target = &diameter;
       }
       interp.run(prog, init);
     } catch (const AlarmError& e) {

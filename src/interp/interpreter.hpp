@@ -100,6 +100,7 @@ class Interpreter final : public lang::Environment {
 
   // --- turning (turning.cpp, turning_data.cpp) ---
   bool diameterWord(std::string_view w);
+  bool turningWord(const lang::Stmt& st);
   bool diameterAxisCall(std::string_view name, std::span<const lang::Value> args);
   bool diameterPermitted(int axis) const;
   void setDiameterMode(DiamMode m, std::string_view word);

@@ -47,12 +47,13 @@ struct ModalState {
   // where it is a diameter.
   double diam_abs[3] = {1, 1, 1};
   double diam_inc[3] = {1, 1, 1};
-  int exact_stop = 64;  // group 10: G60/G64/G641..
-  double feed = 0;      // F in mm/min (G94) as the control holds it
-  double disc = 0;      // DISC=
-  double offn = 0;      // OFFN=
-  int tool = 0;         // T
-  int edge = 0;         // D
+  bool diam_permitted[3] = {false, false, false};  // the MD20100 axis or MD30460 bit 2
+  int exact_stop = 64;                             // group 10: G60/G64/G641..
+  double feed = 0;                                 // F in mm/min (G94) as the control holds it
+  double disc = 0;                                 // DISC=
+  double offn = 0;                                 // OFFN=
+  int tool = 0;                                    // T
+  int edge = 0;                                    // D
 };
 
 // Words of one block, collected before execution (their order inside a block does not matter

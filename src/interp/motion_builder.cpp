@@ -38,6 +38,11 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
     // Diameter programming (docs/turning.md): a diameter is twice the radius position.
     double factor = absolute ? modal.diam_abs[i] : modal.diam_inc[i];
     if (mode > AxisMode::IC) {  // DAC, DIC, RAC, RIC: diameter or radius for this word
+      if (!modal.diam_permitted[i])
+        raise(AlarmNumber::NoTransverseAxis,
+              fmt::format("no transverse axis: DAC/DIC/RAC/RIC need {} as the transverse axis "
+                          "(MD20100) or permitted by MD30460 bit 2",
+                          "XYZ"[i]));
       absolute = mode == AxisMode::DAC || mode == AxisMode::RAC;
       factor = mode == AxisMode::DAC || mode == AxisMode::DIC ? 0.5 : 1;
     }

@@ -56,6 +56,7 @@ bool Interpreter::diameterPermitted(int axis) const {
 
 void Interpreter::updateDiameter() {
   for (int i = 0; i < 3; ++i) {
+    modal_.diam_permitted[i] = diameterPermitted(i);
     const DiamAxis a = modal_.diam_axis[i];
     factors(a == DiamAxis::Chan ? modal_.diam : asChannelMode(a), modal_.diam_abs[i],
             modal_.diam_inc[i]);
@@ -132,6 +133,19 @@ bool Interpreter::diameterAxisCall(std::string_view name, std::span<const Value>
 // DIAM90 is active for the axis (PM-NC: "also when reading the actual values in the WCS").
 double Interpreter::readPosition(double radius_value, int ax) const {
   return modal_.diam_abs[ax] == 1 ? radius_value : radius_value * 2;
+}
+
+// An extended address of turning; false for every other name. Not inlined into the word loop.
+bool Interpreter::turningWord(const lang::Stmt& st) {
+  if (st.name == "LIMS") {
+    // LIMS=: the spindle speed limit of G96/G961 (PM-NC "Constant cutting rate"): no path
+    // effect.
+    const double v = st.literal ? st.literal_value : eval_.number(block_, st.expr);
+    if (!(v >= 0 && v <= 1e9))
+      raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: LIMS={}", v));
+    return true;
+  }
+  return false;
 }
 
 void Interpreter::setFeedType(FeedType t) {

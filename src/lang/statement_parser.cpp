@@ -172,6 +172,11 @@ void Parser::addWord(std::string_view address, int ext, int value, int col, bool
   if (v.kind == NodeKind::Call && (v.text == "AC" || v.text == "IC" || v.text == "DAC" ||
                                    v.text == "DIC" || v.text == "RAC" || v.text == "RIC")) {
     if (v.b != 1) syntax(std::string(v.text) + " takes one value");
+    // Diameter/radius for one word: axes only (PM-NC "Axis-specific diameter programming").
+    const bool diameter_mode = v.text[0] == 'D' || v.text[0] == 'R';
+    if (diameter_mode &&
+        (address.size() != 1 || address[0] == 'I' || address[0] == 'J' || address[0] == 'K'))
+      syntax(std::string(v.text) + " only with an axis, not with " + std::string(address));
     st.mode = v.text == "AC"    ? AxisMode::AC
               : v.text == "IC"  ? AxisMode::IC
               : v.text == "DAC" ? AxisMode::DAC
