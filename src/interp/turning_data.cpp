@@ -109,8 +109,7 @@ bool Interpreter::turningDataRead(std::string_view name, std::span<const Value> 
     out = Value::real(readPosition(motion_.wcs()[ax], ax));
     return true;
   }
-  const int id = data_.find(name);
-  if (id < 0 || id != md_transverse_) return false;
+  if (name != "$MC_DIAMETER_AX_DEF" && name != "MD20100") return false;
   if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
   const int tx = transverseAxis();
   out = Value::string(tx < 0 ? std::string() : std::string(1, "XYZ"[tx]));
