@@ -73,7 +73,8 @@ void Interpreter::resetDiameterAxes() {
 void Interpreter::setDiameterMode(DiamMode m, std::string_view word) {
   if ((m == DiamMode::On || m == DiamMode::On90) && transverseAxis() < 0)
     raise(AlarmNumber::NoTransverseAxis,
-          fmt::format("no transverse axis exists for {}: MD20100 $MC_DIAMETER_AX_DEF names none",
+          fmt::format("no transverse axis exists for {}: MD20100 $MC_DIAMETER_AX_DEF names none "
+                      "(an init file sets it: $MC_DIAMETER_AX_DEF=\"X\")",
                       word));
   modal_.diam = m;
   updateDiameter();
