@@ -295,10 +295,14 @@ void Interpreter::assign(const Stmt& st) {
     static constexpr std::string_view kAxes[] = {"X", "Y", "Z"};
     word.name = kAxes[axis.str[0] - 'X'];
     const Node& rhs = block_.node(st.expr);
-    if (rhs.kind == NodeKind::Call && (rhs.text == "AC" || rhs.text == "IC") && rhs.b == 1) {
-      word.mode = rhs.text == "AC" ? lang::AxisMode::AC : lang::AxisMode::IC;
-      word.expr = block_.arg(rhs, 0);
-    }
+    static constexpr std::pair<std::string_view, lang::AxisMode> kModes[] = {
+        {"AC", lang::AxisMode::AC},   {"IC", lang::AxisMode::IC},   {"DAC", lang::AxisMode::DAC},
+        {"DIC", lang::AxisMode::DIC}, {"RAC", lang::AxisMode::RAC}, {"RIC", lang::AxisMode::RIC}};
+    for (const auto& [text, mode] : kModes)
+      if (rhs.kind == NodeKind::Call && rhs.text == text && rhs.b == 1) {
+        word.mode = mode;
+        word.expr = block_.arg(rhs, 0);
+      }
     word.kind = StmtKind::Word;
     word.has_equals = false;
     collectWord(word);
