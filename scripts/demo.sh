@@ -11,5 +11,7 @@ mkdir -p out
   examples/lentoax.MPF
 ./build/ncoffset --init examples/tools.INI -o out/pocket.csv examples/pocket.MPF
 ./build/ncoffset --init examples/tools.INI -o out/pocket.html examples/pocket.MPF
-echo "wrote out/frames.csv, out/lentoax.csv, out/pocket.csv and the report out/pocket.html:"
+./build/ncoffset --init examples/lathe.INI --init examples/lathe_tools.INI --view zx \
+  -o out/lathe.html examples/lathe.MPF
+echo "wrote out/frames.csv, out/lentoax.csv, out/pocket.csv and the reports out/pocket.html, out/lathe.html:"
 cat out/frames.csv out/lentoax.csv out/pocket.csv

@@ -72,6 +72,7 @@ enum class AlarmNumber : int {
   Arithmetic = 14051,         // arithmetic error (division by zero, SQRT(-1), overflow)
   JumpNotFound = 14080,       // jump destination not found
   IllegalDef = 14500,         // DEF after the first statement
+  NoTransverseAxis = 16510,   // diameter programming without a transverse axis (MD20100)
   ArrayIndex1 = 17020,        // array index 1 out of range
   ArrayIndex2 = 17030,        // array index 2 out of range
   EdgeNotExisting = 17181,    // T no., D no. not existing

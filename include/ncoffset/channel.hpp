@@ -42,6 +42,10 @@ enum class CoordSystem { MCS, WCS };
 struct RunOptions {
   CoordSystem coords = CoordSystem::MCS;
   Limits limits;
+  // The transverse axis (MD20100) of the program's path as diameter values (positions and arc
+  // centres times 2): --diameter, docs/turning.md. Default: radius values, as the machine
+  // moves.
+  bool diameter_output = false;
 };
 
 // How a run ended.

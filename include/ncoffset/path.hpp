@@ -11,6 +11,12 @@ namespace ncoffset {
 enum class Motion { G0, G1, G2, G3 };
 const char* motionName(Motion m);
 
+// What a feed value means (G group 15, PM-NC "Feedrate"): mm/min (G94, G961, G971), mm per
+// spindle revolution (G95, G96, G97) or the inverse of the block's time in minutes (G93).
+enum class FeedUnit : unsigned char { MmPerMin, MmPerRev, InverseTime };
+// "mm/min", "mm/rev", "1/min".
+const char* feedUnitName(FeedUnit u);
+
 // One output segment. Points are in the coordinate system chosen by the run (MCS or WCS).
 struct Segment {
   int line = 0;  // 1-based source line of the block that produced it
@@ -21,7 +27,8 @@ struct Segment {
   Vec3 centre;           // arcs: absolute centre, lying in the plane of the start point
   Vec3 normal{0, 0, 1};  // arcs: unit normal; motion G2/G3 is the sense viewed from +normal
   int turns = 0;         // arcs: additional full turns (TURN=)
-  double feed = 0;       // mm/min (G94) or mm/rev (G95) as programmed; 0 for G0
+  double feed = 0;       // in feed_unit as programmed (G70/G700: converted to mm); 0 for G0
+  FeedUnit feed_unit = FeedUnit::MmPerMin;
   // false: rapid traverse. G0 rows, and the G2/G3 corner circle (or the DISC chords) radius
   // compensation inserts before a G0 block: it moves with that block's data (PM-F 840Di 11/2006
   // p364), at rapid traverse.

@@ -35,6 +35,7 @@ struct MotionBlock {
   Vec3 tool_offset;  // BCS vector from tool tip to carrier reference point
   Vec3 tip;          // BCS vector P - S of a turning tool (frame mirroring applied)
   double feed = 0;
+  FeedUnit feed_unit = FeedUnit::MmPerMin;  // G group 15 of the block
   bool has_feed = false;
   int line = 0;
   int file = 0;

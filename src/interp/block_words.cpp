@@ -66,7 +66,7 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
       raise(AlarmNumber::AddressTwice, fmt::format("address {} programmed too often", name));
     words_.axis[i] = true;
     words_.axis_value[i] = value();
-    words_.axis_mode[i] = st.mode;
+    words_.axis_mode[i] = st.mode;  // DAC/DIC/RAC/RIC: checked where applied (MotionBuilder)
     return;
   }
   if (st.mode != AxisMode::Default && c != 'I' && c != 'J' && c != 'K')
@@ -232,7 +232,8 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
   if (name == "SPOS" || name == "SPOSA") {
     value();
     return;
-  }                                                          // spindle positioning
+  }  // spindle positioning
+  if (turningWord(st)) return;
   if (predefinedAssign(name, Value::real(value()))) return;  // docs/names.md
   notModelled(fmt::format("address {}=", name),
               "this address changes the path and is not modelled");

@@ -13,6 +13,16 @@
 namespace ncoffset {
 
 namespace {
+// The transverse axis as diameter values (--diameter, docs/turning.md): positions and centres
+// times 2. Lines stay lines; an arc's drawing would be an ellipse, which is why the drawings
+// (SVG, HTML) are never asked for it.
+Segment asDiameter(Segment s, int axis) {
+  s.start[axis] *= 2;
+  s.end[axis] *= 2;
+  s.centre[axis] *= 2;
+  return s;
+}
+
 // Forwards to whichever sink the current run writes to.
 class SwitchSink final : public PathSink {
  public:
@@ -26,13 +36,32 @@ class SwitchSink final : public PathSink {
   bool wantsProgrammed() const override { return target && target->wantsProgrammed(); }
   void finish(const Alarm* a) override { target->finish(a); }
 };
+
+// Between SwitchSink and the run's sink with --diameter only (the usual run pays nothing).
+class DiameterSink final : public PathSink {
+ public:
+  PathSink* next = nullptr;
+  int axis = 0;
+  void segment(const Segment& s) override { next->segment(asDiameter(s, axis)); }
+  void message(const SourceLoc& l, const std::string& t) override { next->message(l, t); }
+  void warning(const SourceLoc& l, int n, const std::string& t) override { next->warning(l, n, t); }
+  void programmed(const Segment& s) override { next->programmed(asDiameter(s, axis)); }
+  bool wantsProgrammed() const override { return next && next->wantsProgrammed(); }
+  void finish(const Alarm* a) override { next->finish(a); }
+};
 }  // namespace
 
 // The chain of stages (docs/architecture.md): interpreter -> smooth approach -> radius
 // compensation -> placement -> sink. Each stage knows only the one after it.
 struct Channel::Impl {
   explicit Impl(const RunOptions& o)
-      : placement(sink, o.coords), trc(placement), sar(trc), interp(o, sink, sar) {}
+      : diameter_output(o.diameter_output),
+        placement(sink, o.coords),
+        trc(placement),
+        sar(trc),
+        interp(o, sink, sar) {}
+  bool diameter_output;
+  DiameterSink diameter;
   SwitchSink sink;
   place::Placement placement;
   trc::RadiusCompensation trc;
@@ -45,6 +74,14 @@ struct Channel::Impl {
     RunResult r;
     try {
       interp::LoadedProgram& prog = interp.load(std::move(src), init);
+      if (diameter_output && !init) {  // after load: the alarm names the program
+        diameter.axis = interp.transverseAxis();
+        if (diameter.axis < 0)
+          raise(AlarmNumber::NoTransverseAxis,
+                "no transverse axis for --diameter: MD20100 $MC_DIAMETER_AX_DEF names none");
+        diameter.next = &out;
+        sink.target = &diameter;
+      }
       interp.run(prog, init);
     } catch (const AlarmError& e) {
       r.status = RunResult::Status::Alarm;

@@ -191,19 +191,37 @@ NCOFFSET_INLINE_STEP bool Interpreter::gUnitsAndFeed(int g) {
       modal_.incremental = true;
       return true;
     case 93:
-      modal_.feed_type = FeedType::G93;
+      setFeedType(FeedType::G93);
       return true;
     case 94:
-      modal_.feed_type = FeedType::G94;
+      setFeedType(FeedType::G94);
       return true;
     case 95:
-      modal_.feed_type = FeedType::G95;
+      setFeedType(FeedType::G95);
       return true;
-    case 96:
-      modal_.feed_type = FeedType::G96;
+    case 96:  // constant cutting speed (S in m/min, LIMS= its speed limit): feed per revolution
+      setFeedType(FeedType::G96);
       return true;
     case 97:
-      modal_.feed_type = FeedType::G97;
+      setFeedType(FeedType::G97);
+      return true;
+    case 961:  // constant cutting speed with a linear feed (mm/min)
+      setFeedType(FeedType::G961);
+      return true;
+    case 971:
+      setFeedType(FeedType::G971);
+      return true;
+    // The "frozen" forms (PM-NC "Feedrate for G96/G961/G97/G971"): their feed units; G962 and
+    // G972 keep the unit that is active (linear or per revolution).
+    case 942:
+      setFeedType(FeedType::G94);
+      return true;
+    case 952:
+    case 973:
+      setFeedType(FeedType::G95);
+      return true;
+    case 962:
+    case 972:
       return true;
     default:
       return false;
@@ -227,6 +245,8 @@ void Interpreter::gNotModelled(int g) {
       notModelled(fmt::format("G{}", g), "polar coordinates");
     case 291:
       notModelled("G291", "ISO dialect mode");
+    case 931:
+      notModelled("G931", "feed given as the travel time of the block");
     default:
       return;
   }
@@ -294,17 +314,18 @@ void Interpreter::namedWord(const Stmt& st) {
     words_.frame_command = w;
     return;
   }
+  if (diameterWord(w)) return;
   if (w == "STOPRE") {
     first_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
     return;
   }
   if (isOneOf(w, {"STOPRE",  "BRISK",  "SOFT",    "DRIVE",   "FFWON",  "FFWOF",  "CFC",    "CFTCP",
-                  "CFIN",    "TOWSTD", "TOWMCS",  "TOWWCS",  "TOWBCS", "TOWTCS", "TOWKCS", "DIAMOF",
+                  "CFIN",    "TOWSTD", "TOWMCS",  "TOWWCS",  "TOWBCS", "TOWTCS", "TOWKCS", "SETMS",
                   "TRAFOOF", "SAVE",   "DISPLOF", "DISPLON", "WAITM",  "G64"}))
     return;  // no effect on the path
-  if (isOneOf(w, {"CIP",    "CT",     "ASPLINE",  "BSPLINE", "CSPLINE", "POLY",    "DIAMON",
-                  "DIAM90", "TRAORI", "TRANSMIT", "TRACYL",  "TRAANG",  "ROTS",    "AROTS",
-                  "CROTS",  "MOVT",   "INVCW",    "INVCCW",  "OEMIPO1", "OEMIPO2", "EXTCALL"}))
+  if (isOneOf(w, {"CIP", "CT", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "TRAORI", "TRANSMIT",
+                  "TRACYL", "TRAANG", "ROTS", "AROTS", "CROTS", "MOVT", "INVCW", "INVCCW",
+                  "OEMIPO1", "OEMIPO2", "EXTCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
   if (predefinedWord(w)) return;  // docs/names.md: (a)/(b) accepted, (c) alarm 99010
   if (!words_.call.empty())       // every word is read: a second call would drop the first name

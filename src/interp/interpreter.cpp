@@ -29,6 +29,12 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
       tools_(options.limits.max_tool_edges),
       motion_(first, data_, frames_, tools_) {
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
+  md_transverse_ = data_.find("$MC_DIAMETER_AX_DEF");
+  md_base_function_mask_ = data_.find("$MA_BASE_FUNCTION_MASK");
+  reset_values_[5] = 1;   // G17
+  reset_values_[13] = 1;  // G90
+  reset_values_[14] = 2;  // G94
+  reset_values_[28] = 1;  // DIAMOF
   md_change_mode_ = data_.find("$MC_TOOL_CHANGE_MODE");
   md_change_m_ = data_.find("$MC_TOOL_CHANGE_M_CODE");
   md_default_edge_ = data_.find("$MC_CUTTING_EDGE_DEFAULT");
@@ -314,10 +320,14 @@ void Interpreter::assign(const Stmt& st) {
     static constexpr std::string_view kAxes[] = {"X", "Y", "Z"};
     word.name = kAxes[axis.str[0] - 'X'];
     const Node& rhs = block_.node(st.expr);
-    if (rhs.kind == NodeKind::Call && (rhs.text == "AC" || rhs.text == "IC") && rhs.b == 1) {
-      word.mode = rhs.text == "AC" ? lang::AxisMode::AC : lang::AxisMode::IC;
-      word.expr = block_.arg(rhs, 0);
-    }
+    static constexpr std::pair<std::string_view, lang::AxisMode> kModes[] = {
+        {"AC", lang::AxisMode::AC},   {"IC", lang::AxisMode::IC},   {"DAC", lang::AxisMode::DAC},
+        {"DIC", lang::AxisMode::DIC}, {"RAC", lang::AxisMode::RAC}, {"RIC", lang::AxisMode::RIC}};
+    for (const auto& [text, mode] : kModes)
+      if (rhs.kind == NodeKind::Call && rhs.text == text && rhs.b == 1) {
+        word.mode = mode;
+        word.expr = block_.arg(rhs, 0);
+      }
     word.kind = StmtKind::Word;
     word.has_equals = false;
     collectWord(word);

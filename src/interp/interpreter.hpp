@@ -3,6 +3,7 @@
 // placement stage. Program flow per PM-JP "Program flow control" and PM-NC "Subprograms".
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -45,6 +46,8 @@ class Interpreter final : public lang::Environment {
   // The text of the line alarmLoc() names ("" where it is not known).
   std::string alarmSourceLine(const AlarmError& e) const;
   const std::string& fileName(int id) const { return flow_.fileName(id); }
+  // The transverse axis of MD20100 (0 X, 1 Y, 2 Z; -1 none).
+  int transverseAxis() const;
   void writeVariablesJson(std::ostream& out) const;
   void setSearchDir(std::filesystem::path dir) { flow_.setSearchDir(std::move(dir)); }
   void setSearchPath(std::vector<std::filesystem::path> path) {
@@ -130,6 +133,23 @@ class Interpreter final : public lang::Environment {
   void doFrameCommand();
   double toMm(double v) const;
 
+  // --- turning (turning.cpp, turning_data.cpp) ---
+  bool diameterWord(std::string_view w);
+  bool turningWord(const lang::Stmt& st);
+  bool diameterAxisCall(std::string_view name, std::span<const lang::Value> args);
+  bool diameterPermitted(int axis) const;
+  void setDiameterMode(DiamMode m, std::string_view word);
+  void updateDiameter();
+  void resetDiameterAxes();
+  double readPosition(double radius_value, int ax) const;
+  void setFeedType(FeedType t);
+  void applyResetValue(int index, int value);
+  int resetIndex(std::span<const lang::Value> idx, bool indexed) const;
+  bool turningDataRead(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                       lang::Value& out);
+  bool turningDataWrite(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                        const lang::Value& v);
+
   // --- tool data and selection (tool_selection.cpp) ---
   void executeToolWords();
   lang::Value callLentoax(std::span<const lang::Value> args);
@@ -139,6 +159,8 @@ class Interpreter final : public lang::Environment {
                   lang::Value& out);
   void writeSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                    const lang::Value& v);
+  // X, Y, Z as 0, 1, 2 (99010 for another axis, 12150 for no axis name).
+  static int axisIndexOf(const lang::Value& v);
   Frame* frameByName(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                      bool& whole);
 
@@ -202,7 +224,10 @@ class Interpreter final : public lang::Environment {
   bool init_file_ = false;
 
   FrameState frames_;
-  int md_max_disc_ = 0;  // MD20220, looked up once
+  int md_max_disc_ = 0;                                // MD20220, looked up once
+  int md_transverse_ = 0, md_base_function_mask_ = 0;  // MD20100, MD30460
+  // MD20150 by G group - 1 (the modelled groups: turning_data.cpp).
+  std::array<int, 60> reset_values_{};
   // $AC_TOTAL_PARTS, $AC_REQUIRED_PARTS, $AC_ACTUAL_PARTS, $AC_SPECIAL_PARTS (state_variables.cpp)
   double part_counters_[4] = {0, 0, 0, 0};
 

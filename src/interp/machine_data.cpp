@@ -30,6 +30,8 @@ constexpr DataSpec kTable[] = {
     {18601, "MM_NUM_GLOBAL_USER_FRAMES", C::NckMd, 0, true, 0, 100, false,
      "global settable frames"},
     // Channel machine data
+    {20100, "DIAMETER_AX_DEF", C::ChannelMd, -1, true, -1, 2, false,
+     "transverse axis, written as an axis name (turning_data.cpp)"},
     {20110, "RESET_MODE_MASK", C::ChannelMd, 0, true, 0, kBig, false, "reset behaviour"},
     {20120, "TOOL_RESET_VALUE", C::ChannelMd, 0, true, 0, kBig, false, "tool at reset"},
     {20121, "TOOL_PRESEL_RESET_VALUE", C::ChannelMd, 0, true, 0, kBig, false,
@@ -68,6 +70,8 @@ constexpr DataSpec kTable[] = {
     {28085, "MM_LINK_TOA_UNIT", C::ChannelMd, 1, true, 1, 1, false, "TO unit of the channel"},
     // Setting data
     // Axis machine data: dynamics only, no effect on the path geometry.
+    {30460, "BASE_FUNCTION_MASK", C::AxisMd, 0, true, 0, 4, false,
+     "bit 2: axis-specific diameter programming permitted"},
     {32000, "MAX_AX_VELO", C::AxisMd, 10000, false, 0, 1e9, false,
      "maximum axis velocity (mm/min)"},
     {32020, "JOG_VELO", C::AxisMd, 2000, false, 0, 1e9, false, "JOG velocity (mm/min)"},

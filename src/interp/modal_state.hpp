@@ -16,7 +16,14 @@
 namespace ncoffset::interp {
 
 enum class Units { G71, G70, G710, G700 };
-enum class FeedType { G93, G94, G95, G96, G97 };
+enum class FeedType { G93, G94, G95, G96, G97, G961, G971 };
+
+// G group 29, diameter/radius programming of the channel (PM-NC "Channel-specific diameter
+// programming", docs/turning.md).
+enum class DiamMode : unsigned char { Off, On, On90, CycOff };
+// The same per axis (DIAMONA[ax] ..., "Axis-specific diameter programming"): Chan follows the
+// channel's group 29 (DIAMCHANA[ax], DIAMCHAN; the transverse axis of MD20100 after reset).
+enum class DiamAxis : unsigned char { Chan, Off, On, On90, CycOff };
 
 struct ModalState {
   Motion motion = Motion::G0;              // group 1 (initial G0 per common machine data)
@@ -32,12 +39,21 @@ struct ModalState {
   core::TrcStrategy trc_strategy = core::TrcStrategy::G460;  // group 48
   int frame_select = 500;                                    // group 8: 500, 54..57, 505..599
   FeedType feed_type = FeedType::G94;
-  int exact_stop = 64;  // group 10: G60/G64/G641..
-  double feed = 0;      // F in mm/min (G94) as the control holds it
-  double disc = 0;      // DISC=
-  double offn = 0;      // OFFN=
-  int tool = 0;         // T
-  int edge = 0;         // D
+  FeedUnit feed_unit = FeedUnit::MmPerMin;  // of feed_type, kept with it (copied per block)
+  DiamMode diam = DiamMode::Off;            // group 29
+  DiamAxis diam_axis[3] = {DiamAxis::Off, DiamAxis::Off, DiamAxis::Off};
+  // From diam, diam_axis and MD20100 (Interpreter::updateDiameter): the factor a programmed
+  // position of axis i is multiplied by, absolute (G90, AC) and incremental (G91, IC); 0.5
+  // where it is a diameter.
+  double diam_abs[3] = {1, 1, 1};
+  double diam_inc[3] = {1, 1, 1};
+  bool diam_permitted[3] = {false, false, false};  // the MD20100 axis or MD30460 bit 2
+  int exact_stop = 64;                             // group 10: G60/G64/G641..
+  double feed = 0;                                 // F in mm/min (G94) as the control holds it
+  double disc = 0;                                 // DISC=
+  double offn = 0;                                 // OFFN=
+  int tool = 0;                                    // T
+  int edge = 0;                                    // D
 };
 
 // Words of one block, collected before execution (their order inside a block does not matter

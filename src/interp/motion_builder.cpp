@@ -33,9 +33,20 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
   Vec3 target = from;
   for (int i = 0; i < 3; ++i) {
     if (!w.axis[i]) continue;
-    double v = toMm(modal, w.axis_value[i]);
-    bool absolute = w.axis_mode[i] == AxisMode::AC ||
-                    (w.axis_mode[i] == AxisMode::Default && !modal.incremental);
+    const AxisMode mode = w.axis_mode[i];
+    bool absolute = mode == AxisMode::AC || (mode == AxisMode::Default && !modal.incremental);
+    // Diameter programming (docs/turning.md): a diameter is twice the radius position.
+    double factor = absolute ? modal.diam_abs[i] : modal.diam_inc[i];
+    if (mode > AxisMode::IC) {  // DAC, DIC, RAC, RIC: diameter or radius for this word
+      if (!modal.diam_permitted[i])
+        raise(AlarmNumber::NoTransverseAxis,
+              fmt::format("no transverse axis: DAC/DIC/RAC/RIC need {} as the transverse axis "
+                          "(MD20100) or permitted by MD30460 bit 2",
+                          "XYZ"[i]));
+      absolute = mode == AxisMode::DAC || mode == AxisMode::RAC;
+      factor = mode == AxisMode::DAC || mode == AxisMode::DIC ? 0.5 : 1;
+    }
+    double v = toMm(modal, w.axis_value[i]) * factor;
     target[i] = absolute ? v : from[i] + v;
     if (!std::isfinite(target[i]) || std::fabs(target[i]) > 1e9)
       raise(AlarmNumber::ValueRange,
@@ -68,6 +79,7 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   if (m.has_feed && modal.feed <= 0)
     raise(AlarmNumber::FeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
   m.feed = m.has_feed ? modal.feed : 0;
+  m.feed_unit = modal.feed_unit;
   m.sar.kind = core::SarKind::None;
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     arc(w, modal, from, plain, to);
@@ -119,8 +131,10 @@ void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3
     for (int k = 0; k < 2; ++k) {
       int ax = axes[k];
       double v = w.centre[ax] ? toMm(modal, w.centre_value[ax]) : 0;
-      // I, J, K are incremental from the start point unless written =AC(..).
-      *out[k] = w.centre_mode[ax] == AxisMode::AC ? v : from[ax] + v;
+      // I, J, K are incremental from the start point unless written =AC(..); an absolute
+      // centre is a diameter under DIAMON/DIAM90, an incremental one a radius (FM P1
+      // "Transverse axes", docs/turning.md).
+      *out[k] = w.centre_mode[ax] == AxisMode::AC ? v * modal.diam_abs[ax] : from[ax] + v;
     }
     req.centre = c;
   }

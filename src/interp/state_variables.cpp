@@ -126,7 +126,8 @@ bool Interpreter::readState(std::string_view name, std::span<const Value> idx, b
     const Vec3 delta = mainRunStop() - motion_.wcs();  // off the programmed point (compensation)
     const Vec3 shift = motion_.frameLinear() * delta;
     const Vec3 p = name == "$AA_IW" ? frames_.toWcs(motion_.bcs() + shift) : motion_.mcs() + shift;
-    out = Value::real(p[axis]);
+    // $AA_IW reads a diameter on the transverse axis under DIAMON/DIAM90 (docs/turning.md).
+    out = Value::real(name == "$AA_IW" ? readPosition(p[axis], axis) : p[axis]);
     return true;
   }
   if (name == "$P_GG") {

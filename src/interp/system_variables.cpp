@@ -74,8 +74,13 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
   return f;
 }
 
+int Interpreter::axisIndexOf(const Value& v) {
+  return axisOf(v);
+}
+
 bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, bool indexed,
                              Value& out) {
+  if (turningDataRead(name, idx, indexed, out)) return true;
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
       if (!indexed || idx.size() != 1)
@@ -123,7 +128,8 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   }
   if (name == "$P_EP") {
     if (!indexed || idx.size() != 1) raise(AlarmNumber::ArrayIndex1, "$P_EP needs [axis]");
-    out = Value::real(motion_.wcs()[axisOf(idx[0])]);
+    const int ax = axisOf(idx[0]);
+    out = Value::real(readPosition(motion_.wcs()[ax], ax));  // a diameter under DIAMON/DIAM90
     return true;
   }
   bool whole;
@@ -143,6 +149,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
 
 void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx, bool indexed,
                               const Value& v) {
+  if (turningDataWrite(name, idx, indexed, v)) return;
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
       if (!indexed || idx.size() != 1)
@@ -163,7 +170,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     *counter = lang::toNumber(v, "workpiece count");
     return;
   }
-  if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP")
+  if (name == "$P_UIFRNUM" || name == "$P_ACTFRAME" || name == "$P_EP" || name == "$AA_IW")
     raise(AlarmNumber::NameNotDefined, fmt::format("{} can only be read", name));
   bool whole;
   Frame* f = frameByName(name, idx, indexed, whole);
@@ -245,6 +252,13 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
     return Value::empty();
   }
   if (name == "LENTOAX") return callLentoax(args);
+  if (diameterAxisCall(name, args)) return Value::empty();
+  if (name == "SETMS") {
+    // SETMS(n): spindle n becomes the master spindle (PM-NC "Spindle"): no path effect; M6
+    // keeps acting for spindle 1 (MD20090 = 1 is what ncoffset models).
+    if (args.size() > 1) raise(AlarmNumber::WrongCallParams, "SETMS takes one spindle number");
+    return Value::empty();
+  }
   if (name == "GETTCOR" || name == "SETTCOR")
     raise(AlarmNumber::NotModelled,
           fmt::format("{} (tool environments) is not modelled by ncoffset", name));

@@ -62,7 +62,9 @@ struct Node {
   int b = -1;             // Binary: right child; Index/Call/RIndex: argument count
 };
 
-enum class AxisMode : std::uint8_t { Default, AC, IC };
+// X=AC(..), X=IC(..); X=DAC(..), DIC, RAC, RIC: absolute/incremental in diameter/radius for this
+// word only (PM-NC "Axis-specific diameter programming").
+enum class AxisMode : std::uint8_t { Default, AC, IC, DAC, DIC, RAC, RIC };
 
 enum class StmtKind : std::uint8_t {
   Word,      // address word: X10, X=R1, G1, M2=6, T="NAME", CR=5, DISC=50

@@ -82,6 +82,13 @@ inline JumpKind jumpKind(std::string_view w) {
 }
 
 // Addresses that take a value after '=' (CR=10, DISC=50) besides the single letters.
+// Predefined procedures written with an axis in brackets and no '=' (PM-NC "Axis-specific
+// diameter programming": DIAMONA[X]): a procedure call, not an indexed variable.
+inline bool isAxisProcedure(std::string_view name) {
+  return name == "DIAMONA" || name == "DIAM90A" || name == "DIAMOFA" || name == "DIACYCOFA" ||
+         name == "DIAMCHANA";
+}
+
 inline bool isExtendedAddress(std::string_view name) {
   if (name.size() == 1) return name[0] != '$' && name[0] != '_';
   switch (packName(name)) {

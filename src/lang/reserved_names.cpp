@@ -15,21 +15,22 @@ namespace {
 
 // Sorted (std::binary_search).
 constexpr std::string_view kPredefined[] = {
-    "ABS",     "AC",      "ACOS",   "AMIRROR", "AND",     "AROT",     "AROTS",  "ASCALE",
-    "ASIN",    "ASPLINE", "ATAN2",  "ATRANS",  "AXIS",    "BOOL",     "BRISK",  "BSPLINE",
-    "B_AND",   "B_NOT",   "B_OR",   "B_XOR",   "CALL",    "CDOF",     "CDOF2",  "CDON",
-    "CFC",     "CFIN",    "CFINE",  "CFTCP",   "CHAN",    "CHANDATA", "CHAR",   "CIP",
-    "CMIRROR", "COS",     "CROT",   "CROTS",   "CSCALE",  "CSPLINE",  "CTRANS", "DEFAULT",
-    "DIAM90",  "DIAMOF",  "DIAMON", "DISPLOF", "DISPLON", "DIV",      "DRIVE",  "EXP",
-    "EXTCALL", "FALSE",   "FFWOF",  "FFWON",   "FRAME",   "GETTCOR",  "IC",     "INT",
-    "INVCCW",  "INVCW",   "KONT",   "KONTC",   "KONTT",   "LENTOAX",  "LN",     "MAXVAL",
-    "MCALL",   "MINVAL",  "MIRROR", "MOD",     "MSG",     "NCK",      "NORM",   "NOT",
-    "OEMIPO1", "OEMIPO2", "OF",     "OR",      "PCALL",   "POLY",     "POT",    "REAL",
-    "REP",     "RET",     "ROT",    "ROTS",    "ROUND",   "ROUNDUP",  "SAVE",   "SCALE",
-    "SET",     "SETTCOR", "SIN",    "SOFT",    "SQRT",    "STOPRE",   "STRING", "STRLEN",
-    "SUPA",    "TAN",     "TO",     "TOWBCS",  "TOWKCS",  "TOWMCS",   "TOWSTD", "TOWTCS",
-    "TOWWCS",  "TRAANG",  "TRACYL", "TRAFOOF", "TRANS",   "TRANSMIT", "TRAORI", "TRUE",
-    "TRUNC",   "WAITM",   "XOR",
+    "ABS",     "AC",        "ACOS",    "AMIRROR", "AND",      "AROT",      "AROTS",     "ASCALE",
+    "ASIN",    "ASPLINE",   "ATAN2",   "ATRANS",  "AXIS",     "BOOL",      "BRISK",     "BSPLINE",
+    "B_AND",   "B_NOT",     "B_OR",    "B_XOR",   "CALL",     "CDOF",      "CDOF2",     "CDON",
+    "CFC",     "CFIN",      "CFINE",   "CFTCP",   "CHAN",     "CHANDATA",  "CHAR",      "CIP",
+    "CMIRROR", "COS",       "CROT",    "CROTS",   "CSCALE",   "CSPLINE",   "CTRANS",    "DAC",
+    "DEFAULT", "DIACYCOFA", "DIAM90",  "DIAM90A", "DIAMCHAN", "DIAMCHANA", "DIAMCYCOF", "DIAMOF",
+    "DIAMOFA", "DIAMON",    "DIAMONA", "DIC",     "DISPLOF",  "DISPLON",   "DIV",       "DRIVE",
+    "EXP",     "EXTCALL",   "FALSE",   "FFWOF",   "FFWON",    "FRAME",     "GETTCOR",   "IC",
+    "INT",     "INVCCW",    "INVCW",   "KONT",    "KONTC",    "KONTT",     "LENTOAX",   "LN",
+    "MAXVAL",  "MCALL",     "MINVAL",  "MIRROR",  "MOD",      "MSG",       "NCK",       "NORM",
+    "NOT",     "OEMIPO1",   "OEMIPO2", "OF",      "OR",       "PCALL",     "POLY",      "POT",
+    "RAC",     "REAL",      "REP",     "RET",     "RIC",      "ROT",       "ROTS",      "ROUND",
+    "ROUNDUP", "SAVE",      "SCALE",   "SET",     "SETMS",    "SETTCOR",   "SIN",       "SOFT",
+    "SQRT",    "STOPRE",    "STRING",  "STRLEN",  "SUPA",     "TAN",       "TO",        "TOWBCS",
+    "TOWKCS",  "TOWMCS",    "TOWSTD",  "TOWTCS",  "TOWWCS",   "TRAANG",    "TRACYL",    "TRAFOOF",
+    "TRANS",   "TRANSMIT",  "TRAORI",  "TRUE",    "TRUNC",    "WAITM",     "XOR",
 };
 static_assert(std::is_sorted(std::begin(kPredefined), std::end(kPredefined)));
 

@@ -88,10 +88,24 @@ void Parser::nameAssignment(std::string_view name, int col) {
   b_.stmts.push_back(st);
 }
 
-// `NAME[indices]=value` at the '['.
+// `NAME[indices]=value` at the '[' (or DIAMONA[X], a procedure with its axis in brackets).
 void Parser::indexedAssignment(std::string_view name, int col) {
   ++i_;
   auto [first, count] = argList(']');
+  if (isAxisProcedure(name)) {
+    Node call;
+    call.kind = NodeKind::Call;
+    call.text = name;
+    call.a = first;
+    call.b = count;
+    Stmt st;
+    st.kind = StmtKind::ProcCall;
+    st.name = name;
+    st.expr = addNode(call);
+    st.column = col;
+    b_.stmts.push_back(st);
+    return;
+  }
   Node t;
   t.kind = name == "R" ? NodeKind::RIndex : NodeKind::Index;
   t.text = name;
@@ -173,9 +187,20 @@ void Parser::addWord(std::string_view address, int ext, int value, int col, bool
   st.expr = value;
   // X=AC(..) / X=IC(..): absolute or incremental dimension for this word only.
   const Node& v = b_.node(value);
-  if (v.kind == NodeKind::Call && (v.text == "AC" || v.text == "IC")) {
-    if (v.b != 1) syntax("AC/IC take one value");
-    st.mode = v.text == "AC" ? AxisMode::AC : AxisMode::IC;
+  if (v.kind == NodeKind::Call && (v.text == "AC" || v.text == "IC" || v.text == "DAC" ||
+                                   v.text == "DIC" || v.text == "RAC" || v.text == "RIC")) {
+    if (v.b != 1) syntax(std::string(v.text) + " takes one value");
+    // Diameter/radius for one word: axes only (PM-NC "Axis-specific diameter programming").
+    const bool diameter_mode = v.text[0] == 'D' || v.text[0] == 'R';
+    if (diameter_mode &&
+        (address.size() != 1 || address[0] == 'I' || address[0] == 'J' || address[0] == 'K'))
+      syntax(std::string(v.text) + " only with an axis, not with " + std::string(address));
+    st.mode = v.text == "AC"    ? AxisMode::AC
+              : v.text == "IC"  ? AxisMode::IC
+              : v.text == "DAC" ? AxisMode::DAC
+              : v.text == "DIC" ? AxisMode::DIC
+              : v.text == "RAC" ? AxisMode::RAC
+                                : AxisMode::RIC;
     st.expr = b_.arg(v, 0);
   }
   b_.stmts.push_back(st);

@@ -29,7 +29,7 @@ void appendNcNumber(fmt::memory_buffer& b, double v, int decimals) {
   b.append(text, end);
 }
 
-std::string mpfHeader(const std::string& coords) {
+std::string mpfHeader(const std::string& coords, bool diameter) {
   const bool mcs = coords == "mcs";
   std::string h = "; ncoffset compensated path (coords " + coords + ")\n";
   if (mcs) {
@@ -44,22 +44,28 @@ std::string mpfHeader(const std::string& coords) {
          ";   tool (T, D) of the source program before running this; frame or tool changes\n"
          ";   inside the source program are not repeated here.\n";
   }
-  h += "; G90 absolute, G71 mm, G94 mm/min: F as programmed (a G95 source: its F values are\n"
-       ";   mm/rev, written unconverted). Arcs: the plane (G17/G18/G19) is written before them,\n"
-       ";   centres absolute (I=AC J=AC K=AC). Each block names its source line.\n";
+  h += "; G90 absolute, G71 mm, G94 mm/min: F as programmed; G95 (mm/rev) or G93 (inverse\n"
+       ";   time) is written before a feed the source programmed so (G95/G96/G97, G93). Arcs:\n"
+       ";   the plane (G17/G18/G19) is written before them, centres absolute (I=AC J=AC K=AC).\n"
+       ";   Each block names its source line.\n";
+  if (diameter)
+    h += "; DIAMON: the transverse axis (MD20100 $MC_DIAMETER_AX_DEF, to be set as in the source)\n"
+         ";   is written as diameter values, its absolute centre too (docs/turning.md).\n";
   h += mcs ? "G90 G71 G94 G40 G17 D0 ; reset: absolute, mm, mm/min, no radius compensation, "
              "XY plane, no tool offset\n"
            : "G90 G71 G94 G40 G17 ; reset: absolute, mm, mm/min, no radius compensation, XY "
              "plane\n";
+  if (diameter) h += "DIAMON ; the transverse axis in diameter\n";
   return h;
 }
 
-MpfWriter::MpfWriter(std::FILE* f, const std::string& coords, FileNames names, int decimals)
+MpfWriter::MpfWriter(std::FILE* f, const std::string& coords, FileNames names, int decimals,
+                     bool diameter)
     : w_(f),
       names_(std::move(names)),
       mcs_(coords == "mcs"),
       decimals_(decimals < 0 ? 6 : decimals) {
-  const std::string h = mpfHeader(coords);
+  const std::string h = mpfHeader(coords, diameter);
   w_.buf().append(h.data(), h.data() + h.size());
 }
 
@@ -105,6 +111,7 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
     b.push_back('\n');
   }
   file_ = s.file;
+  if (motion != Motion::G0 && s.has_feed && s.feed_unit != unit_) feedUnit(s.feed_unit);
   fmt::format_to(fmt::appender(b), "N{} {}", ++n_, motionName(motion));
   if (mcs_) append(b, " SUPA");
   const char* axis[3] = {" X", " Y", " Z"};
@@ -134,6 +141,15 @@ void MpfWriter::feed(const Segment& s) {
   appendNcNumber(w_.buf(), s.feed, decimals_);
   has_feed_ = true;
   feed_ = s.feed;
+}
+
+// G93 / G94 / G95 in a block of its own before the first feed of another unit; the F that
+// follows is written again (its meaning changed).
+void MpfWriter::feedUnit(FeedUnit u) {
+  const char* code = u == FeedUnit::MmPerRev ? "G95" : u == FeedUnit::InverseTime ? "G93" : "G94";
+  fmt::format_to(fmt::appender(w_.buf()), "{} ; feed in {}\n", code, feedUnitName(u));
+  unit_ = u;
+  has_feed_ = false;
 }
 
 void MpfWriter::source(const Segment& s) {

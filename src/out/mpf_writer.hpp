@@ -18,7 +18,10 @@ class MpfWriter final : public PathSink {
   // coords: "mcs" or "wcs", named in the header comment. names: file names for a comment
   // where the source file of the blocks changes (may be empty: line numbers only). decimals:
   // of the numbers, 0..17, kShortest (shortest_number.hpp) for the default, 6.
-  MpfWriter(std::FILE* f, const std::string& coords, FileNames names = {}, int decimals = -1);
+  // diameter: the transverse axis arrives as diameter values (--diameter): the reset block
+  // says DIAMON.
+  MpfWriter(std::FILE* f, const std::string& coords, FileNames names = {}, int decimals = -1,
+            bool diameter = false);
   void segment(const Segment& s) override;
   void message(const SourceLoc& where, const std::string& text) override;
   void warning(const SourceLoc& where, int number, const std::string& text) override;
@@ -28,6 +31,7 @@ class MpfWriter final : public PathSink {
  private:
   void block(const Segment& s, Motion motion, Vec3 end);
   void feed(const Segment& s);
+  void feedUnit(FeedUnit u);
   void source(const Segment& s);
 
   BufferedWriter w_;
@@ -38,7 +42,8 @@ class MpfWriter final : public PathSink {
   int file_ = -1;    // source file of the last block
   int plane_ = -1;   // applicate axis of the last plane written (2: G17, 1: G18, 0: G19)
   bool has_feed_ = false;
-  double feed_ = 0;  // the last F written
+  double feed_ = 0;                     // the last F written
+  FeedUnit unit_ = FeedUnit::MmPerMin;  // of the last F written (the header writes G94)
   bool finished_ = false;
 };
 
@@ -47,6 +52,6 @@ class MpfWriter final : public PathSink {
 void appendNcNumber(fmt::memory_buffer& b, double v, int decimals = 6);
 
 // The header of the program for coords "mcs" or "wcs": comment lines and the reset block.
-std::string mpfHeader(const std::string& coords);
+std::string mpfHeader(const std::string& coords, bool diameter = false);
 
 }  // namespace ncoffset::out

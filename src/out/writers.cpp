@@ -33,7 +33,9 @@ void JsonLinesWriter::segment(const Segment& s) {
                    Number{s.centre.x + 0.0, d}, Number{s.centre.y + 0.0, d},
                    Number{s.centre.z + 0.0, d}, Number{s.normal.x + 0.0, d},
                    Number{s.normal.y + 0.0, d}, Number{s.normal.z + 0.0, d}, s.turns);
-  if (s.has_feed) fmt::format_to(it, ",\"feed\":{}", Number{s.feed, d});
+  if (s.has_feed)
+    fmt::format_to(it, ",\"feed\":{},\"feed_unit\":\"{}\"", Number{s.feed, d},
+                   feedUnitName(s.feed_unit));
   fmt::format_to(it, "}}\n");
   w_.lineDone();
 }

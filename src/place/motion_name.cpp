@@ -16,4 +16,16 @@ const char* motionName(Motion m) {
   return "G1";
 }
 
+const char* feedUnitName(FeedUnit u) {
+  switch (u) {
+    case FeedUnit::MmPerMin:
+      return "mm/min";
+    case FeedUnit::MmPerRev:
+      return "mm/rev";
+    case FeedUnit::InverseTime:
+      return "1/min";
+  }
+  return "mm/min";
+}
+
 }  // namespace ncoffset

@@ -16,6 +16,7 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
   s.motion = g.motion;
   s.turns = g.turns;
   s.feed = m.feed;
+  s.feed_unit = m.feed_unit;
   s.has_feed = m.has_feed;
   Vec3 normal;
   normal[g.applicate] = 1;

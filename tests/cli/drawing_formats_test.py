@@ -84,5 +84,16 @@ if not isinstance(root, str):
     title = mark.find(f"{NS}title").text if mark is not None else ""
     check("alarm: title names it", title.startswith("alarm 14040 at ") and "A.MPF:2:" in title, title)
 
+# The lathe example (docs/turning.md) as an HTML report in the ZX plane; --diameter is refused
+# for drawings (a doubled axis would make its circles ellipses).
+lathe = [os.path.join(examples, n) for n in ("lathe.INI", "lathe_tools.INI", "lathe.MPF")]
+out = os.path.join(d, "lathe.html")
+p = run("--init", lathe[0], "--init", lathe[1], "--view", "zx", "-o", out, lathe[2])
+check("lathe: html report", p.returncode == 0 and "<svg" in open(out).read(), p.stderr)
+p = run("--init", lathe[0], "--init", lathe[1], "--diameter", "-o", os.path.join(d, "l.svg"),
+        lathe[2])
+check("lathe: --diameter refused for svg", p.returncode == 1 and "--diameter" in p.stderr,
+      (p.returncode, p.stderr))
+
 print("all format checks hold" if not fails else f"{len(fails)} format checks fail")
 sys.exit(1 if fails else 0)

@@ -98,6 +98,40 @@ for coords, text in cases.items():
               all(s in text for s in ("G17\n", "G18\n", "G19\n", "TURN=1", "TURN=2", "K=AC(")), text)
         check("wcs: MSG as a comment", "; MSG: done" in text, text)
 
+# A lathe (docs/turning.md): DIAMON, G95 with G94 in between, arcs in G18, a turning tool; once
+# with radius values, once with --diameter (the MPF then says DIAMON and needs MD20100 as the
+# source had it). The MPF writes G95/G94 where the feed unit changes.
+lathe_ini = write("LATHE.INI", '$MC_DIAMETER_AX_DEF="X"\n$MC_GCODE_RESET_VALUES[5]=2\nM17\n')
+axis_ini = write("AXIS.INI", '$MC_DIAMETER_AX_DEF="X"\nM17\n')
+lathe = write("LATHE.MPF", """$TC_DP1[1,1]=500 $TC_DP2[1,1]=3 $TC_DP3[1,1]=20 $TC_DP4[1,1]=40
+T1 D1 DIAMON G95
+G0 X40 Z2
+G1 Z0 F0.2
+G3 X60 Z-10 I0 K-10
+G94 G1 X70 F300
+G95 G2 X90 Z-20 I=AC(90) K=AC(-10) F0.1
+G0 X120 Z50
+M30
+""")
+for extra in ([], ["--diameter"]):
+    tag = "lathe" + ("-diameter" if extra else "")
+    a_csv, mpf, b_csv = (os.path.join(d, f"{tag}.{ext}") for ext in ("csv", "mpf", "back.csv"))
+    p = run("--init", lathe_ini, *extra, "-o", a_csv, lathe)
+    check(f"{tag}: original runs", p.returncode == 0, p.stderr)
+    p = run("--init", lathe_ini, *extra, "-o", mpf, lathe)
+    check(f"{tag}: MPF written", p.returncode == 0, p.stderr)
+    text = open(mpf).read()
+    check(f"{tag}: G95 before the first feed per revolution, G94 where it changes",
+          "G95 ; feed in mm/rev\nN2 G1" in text and "G94 ; feed in mm/min\n" in text, text)
+    check(f"{tag}: DIAMON only with --diameter", ("\nDIAMON ;" in text) == bool(extra), text)
+    p = run("--init", axis_ini, *extra, "-o", b_csv, mpf)
+    check(f"{tag}: the MPF runs", p.returncode == 0, p.stderr)
+    a, b = rows(a_csv), rows(b_csv)
+    bad = [(ra, rb) for ra, rb in zip(a, b)
+           if ra["motion"] != rb["motion"]
+           or not all(same(ra[k], rb[k]) for k in ("x", "y", "z", "cx", "cy", "cz", "feed"))]
+    check(f"{tag}: same path", len(a) == len(b) == 6 and not bad, (len(a), len(b), bad[:3]))
+
 # An alarm ends the program with the alarm, M0 and M30; the path before it is there.
 prog = write("ALARM.MPF", "G17 G90 G1 X10 Y0 Z0 F100\nG2 X20 Y0 I3 J0\nM30\n")
 out = os.path.join(d, "alarm.mpf")

@@ -67,7 +67,7 @@ TEST(MpfWriter, Header) {
     for (size_t i = 0; i + 1 < l.size(); ++i) EXPECT_EQ(l[i].rfind("; ", 0), 0u) << l[i];
     const std::string reset =
         coords == "mcs" ? "G90 G71 G94 G40 G17 D0 ; reset: " : "G90 G71 G94 G40 G17 ; reset: ";
-    EXPECT_EQ(l.back().rfind(reset, 0), 0u) << l.back();
+    EXPECT_EQ(l.back().rfind(reset, 0), 0u) << l.back();  // (without --diameter)
     const std::string text = mpfHeader(coords);
     EXPECT_EQ(text.find(coords == "mcs" ? "(MCS)" : "(WCS)") != std::string::npos, true);
     EXPECT_EQ(text.find("SUPA") != std::string::npos, coords == "mcs");
@@ -103,6 +103,34 @@ TEST(MpfWriter, LinesFeedOnlyWhenItChangesAndTheEnd) {
                                    "N6 G1 X0 Y0 Z0 F12.5 ; line 8",
                                    "M30"};
   EXPECT_EQ(p, want);
+}
+
+// G95 (a lathe's feed per revolution, G96/G97 too) and G93 in a block of their own before the
+// first feed of that unit; F is written again after the change (docs/turning.md).
+TEST(MpfWriter, FeedUnitWhenItChanges) {
+  auto rev = [](Segment s) {
+    s.feed_unit = FeedUnit::MmPerRev;
+    return s;
+  };
+  auto p = program({rev(lineSeg(3, Motion::G1, {0, 0, 0}, {10, 0, 0}, 0.2)),
+                    rev(lineSeg(4, Motion::G1, {10, 0, 0}, {10, 0, -5}, 0.2)),
+                    rev(lineSeg(5, Motion::G0, {10, 0, -5}, {20, 0, 5})),
+                    lineSeg(6, Motion::G1, {20, 0, 5}, {20, 0, 0}, 0.2),
+                    rev(lineSeg(7, Motion::G1, {20, 0, 0}, {25, 0, 0}, 0.2))});
+  std::vector<std::string> want = {
+      "G95 ; feed in mm/rev",     "N1 G1 X10 Y0 Z0 F0.2 ; line 3", "N2 G1 X10 Y0 Z-5 ; line 4",
+      "N3 G0 X20 Y0 Z5 ; line 5", "G94 ; feed in mm/min",          "N4 G1 X20 Y0 Z0 F0.2 ; line 6",
+      "G95 ; feed in mm/rev",     "N5 G1 X25 Y0 Z0 F0.2 ; line 7", "M30"};
+  EXPECT_EQ(p, want);
+}
+
+// --diameter: the header says so and DIAMON follows the reset block.
+TEST(MpfWriter, DiameterHeader) {
+  const std::string h = mpfHeader("mcs", true);
+  EXPECT_NE(h.find("G90 G71 G94 G40 G17 D0 ; reset"), std::string::npos);
+  EXPECT_NE(h.find("\nDIAMON ; the transverse axis in diameter\n"), std::string::npos);
+  EXPECT_LT(h.find("G90 G71 G94"), h.find("\nDIAMON"));
+  EXPECT_EQ(mpfHeader("mcs").find("\nDIAMON"), std::string::npos);
 }
 
 TEST(MpfWriter, ArcsInEachPlaneWithThePlaneWhenItChanges) {

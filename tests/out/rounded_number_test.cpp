@@ -135,7 +135,8 @@ TEST(RoundedNumber, JsonLinesWithDecimals) {
   }
   EXPECT_EQ(readAll(f.get()),
             "{\"line\":2,\"file\":\"P.MPF\",\"motion\":\"G2\",\"x\":10,\"y\":0,\"z\":0,"
-            "\"cx\":5,\"cy\":0.33,\"cz\":0,\"normal\":[0,0,1],\"turns\":0,\"feed\":100}\n");
+            "\"cx\":5,\"cy\":0.33,\"cz\":0,\"normal\":[0,0,1],\"turns\":0,\"feed\":100,\"feed_"
+            "unit\":\"mm/min\"}\n");
 }
 
 TEST(RoundedNumber, MpfWithDecimals) {

@@ -152,8 +152,9 @@ TEST(JsonLinesWriter, SegmentsMessagesAndAlarmRecord) {
   auto l = lines(readAll(f.get()));
   ASSERT_EQ(l.size(), 4u);
   EXPECT_EQ(l[0], R"({"line":1,"file":"MAIN.MPF","motion":"G0","x":0,"y":0,"z":5})");
-  EXPECT_EQ(l[1], R"({"line":2,"file":"dir\\SUB \"1\".SPF","motion":"G2","x":20,"y":0,"z":5,)"
-                  R"("cx":15,"cy":0,"cz":5,"normal":[0,0,1],"turns":2,"feed":100})");
+  EXPECT_EQ(l[1],
+            R"({"line":2,"file":"dir\\SUB \"1\".SPF","motion":"G2","x":20,"y":0,"z":5,)"
+            R"("cx":15,"cy":0,"cz":5,"normal":[0,0,1],"turns":2,"feed":100,"feed_unit":"mm/min"})");
   EXPECT_EQ(l[2], R"({"message":"tab\u0009here \"quoted\"","file":"MAIN.MPF","line":3})");
   EXPECT_EQ(
       l[3],
@@ -172,7 +173,26 @@ TEST(JsonLinesWriter, NoAlarmRecordOnNormalEnd) {
   ASSERT_EQ(l.size(), 1u);
   EXPECT_EQ(
       l[0],
-      R"({"line":1,"file":"MAIN.MPF","motion":"G1","x":0.1,"y":0.3333333333333333,"z":0,"feed":5})");
+      R"({"line":1,"file":"MAIN.MPF","motion":"G1","x":0.1,"y":0.3333333333333333,"z":0,"feed":5,"feed_unit":"mm/min"})");
+}
+
+// The feed's unit from G group 15 (docs/turning.md): mm/rev under G95/G96/G97, 1/min (G93).
+TEST(JsonLinesWriter, FeedUnit) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  {
+    JsonLinesWriter w(f.get(), names());
+    Segment a = line(1, Motion::G1, {1, 0, 0}, 0.2, true);
+    a.feed_unit = FeedUnit::MmPerRev;
+    w.segment(a);
+    a.feed_unit = FeedUnit::InverseTime;
+    w.segment(a);
+    w.finish(nullptr);
+  }
+  auto l = lines(readAll(f.get()));
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_NE(l[0].find(R"("feed":0.2,"feed_unit":"mm/rev"})"), std::string::npos) << l[0];
+  EXPECT_NE(l[1].find(R"("feed":0.2,"feed_unit":"1/min"})"), std::string::npos) << l[1];
 }
 
 TEST(JsonString, Escaping) {

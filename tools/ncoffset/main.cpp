@@ -66,6 +66,7 @@ struct Args {
   std::vector<std::string> inits;
   std::vector<std::string> path;  // --path: where subprograms and cycles are searched
   int decimals = -1;              // --decimals: -1 the shortest round-trip text
+  bool diameter = false;
 };
 
 std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
@@ -79,7 +80,8 @@ std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
   if (a.format == "html")
     return std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(a.view),
                                                        a.program, a.coords, d);
-  if (a.format == "mpf") return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names, d);
+  if (a.format == "mpf")
+    return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names, d, a.diameter);
   if (d >= 0) return std::make_unique<ncoffset::out::RoundedCsvWriter>(out, d);
   return std::make_unique<ncoffset::out::CsvWriter>(out);
 }
@@ -179,6 +181,9 @@ int main(int argc, char** argv) {
                  "round written numbers to at most N decimals, 0..17 (default: shortest "
                  "round trip; mpf: 6)")
       ->transform(ncoffset::cli::limitValue(17, 0));
+  app.add_flag("--diameter", a.diameter,
+               "csv, jsonl, mpf: the transverse axis (MD20100) as diameter values (default: "
+               "radius values)");
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
       ->capture_default_str()
@@ -224,5 +229,10 @@ int main(int argc, char** argv) {
   }
   options.coords = a.coords == "wcs" ? ncoffset::CoordSystem::WCS : ncoffset::CoordSystem::MCS;
   if (a.format.empty()) a.format = a.output.empty() ? "csv" : extensionFormat(a.output);
+  if (a.diameter && (a.format == "svg" || a.format == "html")) {
+    ncoffset::cli::printError("--diameter: drawings (svg, html) show the path as it is (radius)");
+    return 1;
+  }
+  options.diameter_output = a.diameter;
   return run(a, options);
 }
