@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "interp/interpreter.hpp"
-#include "interp/predefined_names.hpp"
+#include "lang/predefined_names.hpp"
 #include "lang/reserved_names.hpp"
 #include "ncoffset/alarm.hpp"
 
@@ -189,10 +189,11 @@ bool Interpreter::isSubprogramName(std::string_view name) {
     raise(AlarmNumber::NotModelled,
           "RET with parameters (the return to a label or block number, or over several levels) "
           "is not modelled by ncoffset");
-  if (!l_number && lang::isPredefinedName(name)) return false;
   // A predefined procedure (SETAL, WAITM, ...) is never a program of the same name; a standard
-  // cycle (CYCLE81, ...) is, where one is there (docs/names.md).
-  if (const PredefinedName* p = findPredefinedName(name); p && !p->cycle) return false;
+  // cycle (CYCLE81, ...) is, where one is there, with its parameters (docs/names.md).
+  const lang::PredefinedName* p = lang::findPredefinedName(name);
+  if (p && !p->cycle) return false;
+  if (!p && !l_number && lang::isPredefinedName(name)) return false;
   return externs_.find(name) != externs_.end() || programExists(name);
 }
 
