@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 
 #include "lang/parser.hpp"
@@ -192,18 +193,25 @@ bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch 
   const std::vector<TextPos>* lines = lvl.program->index->labels(label);
   if (!lines) return false;
   // The first occurrence the search meets (PM-NC "Program jumps": the destination is searched
-  // from the jumping block in the jump's direction), so a label may stand more than once.
-  if (search.forward)
-    for (const auto& p : *lines)
-      if (p.offset > here) {
-        lvl.pos = p;
-        return true;
-      }
-  for (auto r = lines->rbegin(); r != lines->rend(); ++r)
-    if ((search.backward && r->offset < here) || (search.here_too && r->offset == here)) {
-      lvl.pos = *r;
+  // from the jumping block in the jump's direction), so a label may stand more than once. The
+  // lines are in file order: a binary search, however often a label is repeated.
+  auto after = std::upper_bound(lines->begin(), lines->end(), here,
+                                [](size_t h, const TextPos& p) { return h < p.offset; });
+  if (search.forward && after != lines->end()) {
+    lvl.pos = *after;
+    return true;
+  }
+  if (after != lines->begin()) {
+    const TextPos& before = *(after - 1);  // the last line at or before `here`
+    if ((search.backward && before.offset < here) || (search.here_too && before.offset == here)) {
+      lvl.pos = before;
       return true;
     }
+    if (search.backward && before.offset == here && after - 1 != lines->begin()) {
+      lvl.pos = *(after - 2);
+      return true;
+    }
+  }
   return false;
 }
 
