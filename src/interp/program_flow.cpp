@@ -14,8 +14,23 @@ using lang::TextPos;
 
 LoadedProgram& ProgramFlow::load(std::shared_ptr<lang::SourceFile> source, bool programs) {
   if (programs)
-    if (LoadedProgram* first = loadArchive(source, main_archive_)) return *first;
-  return loadRange(std::move(source), TextPos{}, kNoOffset);
+    if (LoadedProgram* first = loadArchive(source, main_archive_)) {
+      indexed(*first);
+      return *first;
+    }
+  return indexed(loadRange(std::move(source), TextPos{}, kNoOffset));
+}
+
+// The control structures of a program are checked before it runs (alarms 12640/12641); the
+// programs of an archive only when they are called, like files of their own.
+LoadedProgram& ProgramFlow::indexed(LoadedProgram& prog) {
+  if (!prog.index) {
+    failed_file_ = prog.file_id;
+    prog.index = std::make_unique<lang::ProgramIndex>(
+        *prog.source, limits_.max_control_depth, limits_.max_line_length, prog.begin, prog.end);
+    failed_file_ = -1;
+  }
+  return prog;
 }
 
 LoadedProgram& ProgramFlow::loadRange(std::shared_ptr<lang::SourceFile> source, TextPos begin,
@@ -26,10 +41,7 @@ LoadedProgram& ProgramFlow::loadRange(std::shared_ptr<lang::SourceFile> source, 
   p->begin = begin;
   p->end = end;
   files_.push_back(std::move(p));
-  LoadedProgram& prog = *files_.back();
-  prog.index = std::make_unique<lang::ProgramIndex>(*prog.source, limits_.max_control_depth,
-                                                    limits_.max_line_length, begin, end);
-  return prog;
+  return *files_.back();
 }
 
 void ProgramFlow::setSearchDir(std::filesystem::path dir) {
@@ -102,7 +114,7 @@ void ProgramFlow::call(std::string_view name, long long repeat) {
           fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main "
                       "program{})",
                       name, name, name, search_path_.empty() ? "" : " and in the --path entries"));
-  ProgramLevel lvl(*prog);
+  ProgramLevel lvl(indexed(*prog));
   lvl.repeat_left = repeat - 1;
   levels_.push_back(lvl);
 }

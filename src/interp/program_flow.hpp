@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "lang/program_index.hpp"
@@ -82,6 +83,9 @@ class ProgramFlow {
   // an init file, which runs as a whole).
   LoadedProgram& load(std::shared_ptr<lang::SourceFile> source, bool programs = true);
   size_t fileCount() const { return files_.size(); }
+  // The file whose control structures were being checked when an alarm came (-1: none);
+  // asking forgets it.
+  int takeFailedFile() { return std::exchange(failed_file_, -1); }
   const std::string& fileName(int id) const {
     return files_[static_cast<size_t>(id)]->source->name();
   }
@@ -150,6 +154,7 @@ class ProgramFlow {
  private:
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
   LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
+  LoadedProgram& indexed(LoadedProgram& prog);
   LoadedProgram& loadRange(std::shared_ptr<lang::SourceFile> source, lang::TextPos begin,
                            size_t end);
 
@@ -164,6 +169,7 @@ class ProgramFlow {
   std::map<std::filesystem::path, std::map<std::string, LoadedProgram*>> archives_;
   std::map<std::string, LoadedProgram*> main_archive_;  // the archive given as the program
   std::vector<ProgramLevel> levels_;
+  int failed_file_ = -1;
 };
 
 }  // namespace ncoffset::interp
