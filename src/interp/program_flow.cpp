@@ -60,7 +60,9 @@ LoadedProgram* ProgramFlow::find(std::string_view name) {
   if (auto it = main_archive_.find(key); it != main_archive_.end()) prog = it->second;
   if (!prog) prog = findIn(search_dir_, key);
   for (size_t k = 0; !prog && k < search_path_.size(); ++k) prog = findIn(search_path_[k], key);
-  if (prog) by_name_.emplace(key, prog);
+  if (!prog) return nullptr;
+  indexed(*prog);  // every caller gets a program it can run
+  by_name_.emplace(key, prog);
   return prog;
 }
 
@@ -114,7 +116,7 @@ void ProgramFlow::call(std::string_view name, long long repeat) {
           fmt::format("program {} not existing (looked for {}.SPF and _N_{}_SPF beside the main "
                       "program{})",
                       name, name, name, search_path_.empty() ? "" : " and in the --path entries"));
-  ProgramLevel lvl(indexed(*prog));
+  ProgramLevel lvl(*prog);
   lvl.repeat_left = repeat - 1;
   levels_.push_back(lvl);
 }

@@ -141,7 +141,8 @@ class ProgramFlow {
   // The subprogram `name` (upper case), loaded on first use; nullptr if there is none. The one
   // search every call form uses (docs/language.md "Where programs are found"): beside the main
   // program, then each --path entry in order (a directory, or a text archive); in each place
-  // NAME.SPF, _N_NAME_SPF, NAME.MPF, _N_NAME_MPF, NAME, case-insensitive.
+  // NAME.SPF, _N_NAME_SPF, NAME.MPF, _N_NAME_MPF, NAME, case-insensitive. The program comes
+  // with its control structures checked (alarms 12640/12641, takeFailedFile() names it).
   LoadedProgram* find(std::string_view name);
   // The --path entries, searched after the main program's directory.
   void setSearchPath(std::vector<std::filesystem::path> path) { search_path_ = std::move(path); }
