@@ -55,6 +55,7 @@ decltype(auto) Interpreter::loading(F&& f) {
     return f();
   } catch (const AlarmError&) {
     if (flow_.fileCount() > before) file_ = static_cast<int>(flow_.fileCount()) - 1;
+    if (int failed = flow_.takeFailedFile(); failed >= 0) file_ = failed;
     throw;
   }
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 
 #include "lang/parser.hpp"
@@ -13,8 +14,23 @@ using lang::TextPos;
 
 LoadedProgram& ProgramFlow::load(std::shared_ptr<lang::SourceFile> source, bool programs) {
   if (programs)
-    if (LoadedProgram* first = loadArchive(source, main_archive_)) return *first;
-  return loadRange(std::move(source), TextPos{}, kNoOffset);
+    if (LoadedProgram* first = loadArchive(source, main_archive_)) {
+      indexed(*first);
+      return *first;
+    }
+  return indexed(loadRange(std::move(source), TextPos{}, kNoOffset));
+}
+
+// The control structures of a program are checked before it runs (alarms 12640/12641); the
+// programs of an archive only when they are called, like files of their own.
+LoadedProgram& ProgramFlow::indexed(LoadedProgram& prog) {
+  if (!prog.index) {
+    failed_file_ = prog.file_id;
+    prog.index = std::make_unique<lang::ProgramIndex>(
+        *prog.source, limits_.max_control_depth, limits_.max_line_length, prog.begin, prog.end);
+    failed_file_ = -1;
+  }
+  return prog;
 }
 
 LoadedProgram& ProgramFlow::loadRange(std::shared_ptr<lang::SourceFile> source, TextPos begin,
@@ -25,10 +41,7 @@ LoadedProgram& ProgramFlow::loadRange(std::shared_ptr<lang::SourceFile> source, 
   p->begin = begin;
   p->end = end;
   files_.push_back(std::move(p));
-  LoadedProgram& prog = *files_.back();
-  prog.index = std::make_unique<lang::ProgramIndex>(*prog.source, limits_.max_control_depth,
-                                                    limits_.max_line_length, begin, end);
-  return prog;
+  return *files_.back();
 }
 
 void ProgramFlow::setSearchDir(std::filesystem::path dir) {
@@ -47,7 +60,9 @@ LoadedProgram* ProgramFlow::find(std::string_view name) {
   if (auto it = main_archive_.find(key); it != main_archive_.end()) prog = it->second;
   if (!prog) prog = findIn(search_dir_, key);
   for (size_t k = 0; !prog && k < search_path_.size(); ++k) prog = findIn(search_path_[k], key);
-  if (prog) by_name_.emplace(key, prog);
+  if (!prog) return nullptr;
+  indexed(*prog);  // every caller gets a program it can run
+  by_name_.emplace(key, prog);
   return prog;
 }
 
@@ -200,18 +215,25 @@ bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch 
   const std::vector<TextPos>* lines = lvl.program->index->labels(label);
   if (!lines) return false;
   // The first occurrence the search meets (PM-NC "Program jumps": the destination is searched
-  // from the jumping block in the jump's direction), so a label may stand more than once.
-  if (search.forward)
-    for (const auto& p : *lines)
-      if (p.offset > here) {
-        lvl.pos = p;
-        return true;
-      }
-  for (auto r = lines->rbegin(); r != lines->rend(); ++r)
-    if ((search.backward && r->offset < here) || (search.here_too && r->offset == here)) {
-      lvl.pos = *r;
+  // from the jumping block in the jump's direction), so a label may stand more than once. The
+  // lines are in file order: a binary search, however often a label is repeated.
+  auto after = std::upper_bound(lines->begin(), lines->end(), here,
+                                [](size_t h, const TextPos& p) { return h < p.offset; });
+  if (search.forward && after != lines->end()) {
+    lvl.pos = *after;
+    return true;
+  }
+  if (after != lines->begin()) {
+    const TextPos& before = *(after - 1);  // the last line at or before `here`
+    if ((search.backward && before.offset < here) || (search.here_too && before.offset == here)) {
+      lvl.pos = before;
       return true;
     }
+    if (search.backward && before.offset == here && after - 1 != lines->begin()) {
+      lvl.pos = *(after - 2);
+      return true;
+    }
+  }
   return false;
 }
 

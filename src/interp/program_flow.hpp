@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "lang/program_index.hpp"
@@ -82,6 +83,9 @@ class ProgramFlow {
   // an init file, which runs as a whole).
   LoadedProgram& load(std::shared_ptr<lang::SourceFile> source, bool programs = true);
   size_t fileCount() const { return files_.size(); }
+  // The file whose control structures were being checked when an alarm came (-1: none);
+  // asking forgets it.
+  int takeFailedFile() { return std::exchange(failed_file_, -1); }
   const std::string& fileName(int id) const {
     return files_[static_cast<size_t>(id)]->source->name();
   }
@@ -140,7 +144,8 @@ class ProgramFlow {
   // The subprogram `name` (upper case), loaded on first use; nullptr if there is none. The one
   // search every call form uses (docs/language.md "Where programs are found"): beside the main
   // program, then each --path entry in order (a directory, or a text archive); in each place
-  // NAME.SPF, _N_NAME_SPF, NAME.MPF, _N_NAME_MPF, NAME, case-insensitive.
+  // NAME.SPF, _N_NAME_SPF, NAME.MPF, _N_NAME_MPF, NAME, case-insensitive. The program comes
+  // with its control structures checked (alarms 12640/12641, takeFailedFile() names it).
   LoadedProgram* find(std::string_view name);
   // The --path entries, searched after the main program's directory.
   void setSearchPath(std::vector<std::filesystem::path> path) { search_path_ = std::move(path); }
@@ -153,6 +158,7 @@ class ProgramFlow {
  private:
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
   LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
+  LoadedProgram& indexed(LoadedProgram& prog);
   LoadedProgram& loadRange(std::shared_ptr<lang::SourceFile> source, lang::TextPos begin,
                            size_t end);
 
@@ -167,6 +173,7 @@ class ProgramFlow {
   std::map<std::filesystem::path, std::map<std::string, LoadedProgram*>> archives_;
   std::map<std::string, LoadedProgram*> main_archive_;  // the archive given as the program
   std::vector<ProgramLevel> levels_;
+  int failed_file_ = -1;
 };
 
 }  // namespace ncoffset::interp

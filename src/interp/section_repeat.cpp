@@ -58,23 +58,23 @@ const std::vector<TextPos>* ProgramFlow::labelLines(std::string_view label) cons
 
 namespace {
 
-// The nearest line before `here`, else (both ways) the nearest after it.
+// The nearest line before `here`, else (both ways) the nearest after it. The lines are in file
+// order: binary searches.
 const TextPos* nearest(const std::vector<TextPos>* lines, size_t here, bool forward_too) {
   if (!lines) return nullptr;
-  for (auto r = lines->rbegin(); r != lines->rend(); ++r)
-    if (r->offset < here) return &*r;
-  if (forward_too)
-    for (const auto& p : *lines)
-      if (p.offset > here) return &p;
-  return nullptr;
+  auto at = std::lower_bound(lines->begin(), lines->end(), here,
+                             [](const TextPos& p, size_t h) { return p.offset < h; });
+  if (at != lines->begin()) return &*(at - 1);
+  if (at != lines->end() && at->offset == here) ++at;
+  return forward_too && at != lines->end() ? &*at : nullptr;
 }
 
 // The first line of `lines` at or after `from` (and before `before`).
 const TextPos* firstFrom(const std::vector<TextPos>* lines, size_t from, size_t before) {
   if (!lines) return nullptr;
-  for (const auto& p : *lines)
-    if (p.offset >= from && p.offset < before) return &p;
-  return nullptr;
+  auto at = std::lower_bound(lines->begin(), lines->end(), from,
+                             [](const TextPos& p, size_t h) { return p.offset < h; });
+  return at != lines->end() && at->offset < before ? &*at : nullptr;
 }
 
 }  // namespace
