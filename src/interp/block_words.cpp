@@ -229,11 +229,12 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     sarWord(st);
     return;
   }
-  if (name == "SPOS" || name == "SPOSA") {
+  if (name == "SPOS" || name == "SPOSA") {  // spindle positioning
     value();
     return;
-  }                                                          // spindle positioning
-  if (predefinedAssign(name, Value::real(value()))) return;  // docs/names.md
+  }
+  // The other extended addresses: (b) accepted, (c) alarm 99010 (docs/names.md).
+  if (predefinedAssign(name, Value::real(value()))) return;
   notModelled(fmt::format("address {}=", name),
               "this address changes the path and is not modelled");
 }
