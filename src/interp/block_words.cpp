@@ -229,12 +229,13 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     sarWord(st);
     return;
   }
-  if (name == "SPOS" || name == "SPOSA") {
+  if (name == "SPOS" || name == "SPOSA") {  // spindle positioning
     value();
     return;
-  }  // spindle positioning
+  }
   if (turningWord(st)) return;
-  if (predefinedAssign(name, Value::real(value()))) return;  // docs/names.md
+  // The other extended addresses: (b) accepted, (c) alarm 99010 (docs/names.md).
+  if (predefinedAssign(name, Value::real(value()))) return;
   notModelled(fmt::format("address {}=", name),
               "this address changes the path and is not modelled");
 }
