@@ -230,7 +230,7 @@ TEST(Channel, VariablesJson) {
   Outcome r =
       run("DEF INT K[3]=SET(1,2,3)\n"
           "DEF REAL A=0.1\n"
-          "DEF BOOL FL=TRUE\n"
+          "DEF BOOL FLAG=TRUE\n"
           "DEF STRING[8] ST=\"a\\b\"\n"
           "R1=3\n"
           "R7=1/3\n"
@@ -241,7 +241,7 @@ TEST(Channel, VariablesJson) {
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
             "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
-            "\"A\": 0.1, \"FL\": true, "
+            "\"A\": 0.1, \"FLAG\": true, "
             "\"K\": [1,2,3], \"ST\": \"a\\\\b\"}\n");
 }
 

@@ -81,7 +81,7 @@ TEST(FlowSyntax, GlobalDefinitionsWithAttributes) {
     EXPECT_DOUBLE_EQ(d.attributes.upper, 20);
   }
   EXPECT_EQ(b.decls[0].name, "DEPTH");
-  Block local = parse("DEF STRING[8] S=\"A\"");
+  Block local = parse("DEF STRING[8] ST=\"A\"");
   EXPECT_FALSE(local.decls[0].global);
   EXPECT_EQ(parseAlarm("DEF CHAN LLI REAL X1"), 12080);  // LLI without its value
 }

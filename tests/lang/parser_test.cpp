@@ -358,9 +358,9 @@ TEST(Parser, DefTypesArraysAndStrings) {
   EXPECT_EQ(s.node(s.decls[0].init).text, "abc");
 
   const std::pair<const char*, VarType> kinds[] = {
-      {"DEF BOOL FL=TRUE", VarType::Bool}, {"DEF CHAR C", VarType::Char},
-      {"DEF AXIS AX=X", VarType::Axis},    {"DEF FRAME FR", VarType::Frame},
-      {"DEF NCK INT GG", VarType::Int},    {"DEF CHAN REAL HH", VarType::Real}};
+      {"DEF BOOL FLAG=TRUE", VarType::Bool}, {"DEF CHAR C", VarType::Char},
+      {"DEF AXIS AX=X", VarType::Axis},      {"DEF FRAME FR", VarType::Frame},
+      {"DEF NCK INT GG", VarType::Int},      {"DEF CHAN REAL HH", VarType::Real}};
   for (const auto& [text, type] : kinds) {
     Block d = parse(text);
     ASSERT_EQ(d.decls.size(), 1u) << text;
