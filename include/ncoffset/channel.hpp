@@ -50,6 +50,8 @@ struct RunResult {
   std::string file_error;      // when status == FileError
 };
 
+class Stream;
+
 class Channel {
  public:
   explicit Channel(RunOptions options = {});
@@ -75,6 +77,7 @@ class Channel {
   void writeVariablesJson(std::ostream& out) const;
 
  private:
+  friend class Stream;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

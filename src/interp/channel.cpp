@@ -5,58 +5,29 @@
 
 #include <algorithm>
 
-#include "interp/interpreter.hpp"
-#include "place/placement.hpp"
-#include "trc/radius_compensation.hpp"
-#include "trc/smooth_approach.hpp"
+#include "interp/channel_impl.hpp"
 
 namespace ncoffset {
 
-namespace {
-// Forwards to whichever sink the current run writes to.
-class SwitchSink final : public PathSink {
- public:
-  PathSink* target = nullptr;
-  void segment(const Segment& s) override { target->segment(s); }
-  void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
-  void warning(const SourceLoc& l, int n, const std::string& t) override {
-    target->warning(l, n, t);
+RunResult Channel::Impl::run(std::shared_ptr<lang::SourceFile> src, PathSink& out, bool init,
+                             bool finish) {
+  sink.target = &out;
+  placement.beginRun([this](int id) -> const std::string& { return interp.fileName(id); });
+  RunResult r;
+  try {
+    interp::LoadedProgram& prog = interp.load(std::move(src));
+    interp.run(prog, init);
+  } catch (const AlarmError& e) {
+    r.status = RunResult::Status::Alarm;
+    r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text(), interp.alarmSourceLine(e)};
+  } catch (const std::bad_alloc&) {
+    r.status = RunResult::Status::Alarm;
+    r.alarm = Alarm{toInt(AlarmNumber::ArrayTooLarge), {}, "out of memory", {}};
   }
-  void programmed(const Segment& s) override { target->programmed(s); }
-  bool wantsProgrammed() const override { return target && target->wantsProgrammed(); }
-  void finish(const Alarm* a) override { target->finish(a); }
-};
-}  // namespace
-
-// The chain of stages (docs/architecture.md): interpreter -> smooth approach -> radius
-// compensation -> placement -> sink. Each stage knows only the one after it.
-struct Channel::Impl {
-  explicit Impl(const RunOptions& o)
-      : placement(sink, o.coords), trc(placement), sar(trc), interp(o, sink, sar) {}
-  SwitchSink sink;
-  place::Placement placement;
-  trc::RadiusCompensation trc;
-  trc::SmoothApproach sar;
-  interp::Interpreter interp;
-
-  RunResult run(std::shared_ptr<lang::SourceFile> src, PathSink& out, bool init, bool finish) {
-    sink.target = &out;
-    placement.beginRun([this](int id) -> const std::string& { return interp.fileName(id); });
-    RunResult r;
-    try {
-      interp::LoadedProgram& prog = interp.load(std::move(src));
-      interp.run(prog, init);
-    } catch (const AlarmError& e) {
-      r.status = RunResult::Status::Alarm;
-      r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text(), interp.alarmSourceLine(e)};
-    } catch (const std::bad_alloc&) {
-      r.status = RunResult::Status::Alarm;
-      r.alarm = Alarm{toInt(AlarmNumber::ArrayTooLarge), {}, "out of memory", {}};
-    }
-    if (finish || r.alarm) out.finish(r.alarm ? &*r.alarm : nullptr);
-    return r;
-  }
-};
+  sink.releaseAll();
+  if (finish || r.alarm) out.finish(r.alarm ? &*r.alarm : nullptr);
+  return r;
+}
 
 Channel::Channel(RunOptions options) {
   Limits& l = options.limits;  // what the stack and memory allow (docs/limits.md)

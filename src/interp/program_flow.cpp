@@ -100,8 +100,28 @@ void ProgramFlow::continueAfter(const TextPos& line) {
   lang::nextLine(lvl.program->source->text(), lvl.pos, skip);
 }
 
+bool ProgramFlow::waitForText() const {
+  LoadedProgram& prog = *levels_.back().program;
+  if (!prog.source->growing()) return false;
+  const bool more = prog.source->waitForMore();
+  if (!more) prog.source->complete();
+  prog.index->extend(*prog.source);
+  prog.block_numbers.clear();  // found again with the new lines
+  if (!more) prog.index->finish();
+  return more;
+}
+
+bool ProgramFlow::nextLineFed(std::string_view& text) {
+  ProgramLevel& lvl = levels_.back();
+  while (waitForText())
+    if (lang::nextLine(lvl.program->source->text(), lvl.pos, text)) return true;
+  return false;
+}
+
 const lang::ControlLink& ProgramFlow::link(size_t offset) const {
   const lang::ControlLink* l = levels_.back().program->index->link(offset);
+  // A structure of a fed program whose end has not been fed yet: wait for it.
+  while (!l && waitForText()) l = levels_.back().program->index->link(offset);
   if (!l)
     raise(AlarmNumber::ControlNesting,
           "invalid nesting of control structures: statement must stand at the start of its block");
@@ -139,6 +159,16 @@ const std::vector<TextPos>& ProgramFlow::blockNumberLines(LoadedProgram& prog, l
 
 bool ProgramFlow::jumpToBlockNumber(long long n, size_t here, JumpSearch search) {
   ProgramLevel& lvl = levels_.back();
+  if (search.forward && lvl.program->source->growing()) {
+    // A fed program: the forward search needs the text up to the destination (or all of it).
+    auto ahead = [&] {
+      for (const auto& p : blockNumberLines(*lvl.program, n))
+        if (p.offset > here) return true;
+      return false;
+    };
+    while (!ahead() && waitForText()) {
+    }
+  }
   const std::vector<TextPos>& lines = blockNumberLines(*lvl.program, n);
   // The nearest occurrence in the search direction: forward first, then backward.
   if (search.forward)
@@ -159,6 +189,8 @@ bool ProgramFlow::jumpToBlockNumber(long long n, size_t here, JumpSearch search)
 bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch search) {
   ProgramLevel& lvl = levels_.back();
   const TextPos* p = lvl.program->index->label(label);
+  // A fed program: a forward search waits for the destination (or the end of the text).
+  while (search.forward && !p && waitForText()) p = lvl.program->index->label(label);
   if (p && ((search.forward && p->offset > here) || (search.backward && p->offset < here) ||
             (search.here_too && p->offset == here))) {
     lvl.pos = *p;

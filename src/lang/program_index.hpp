@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include "lang/source_file.hpp"
 
@@ -27,7 +28,11 @@ class ProgramIndex {
  public:
   // Scans `file`. Throws AlarmError with the offending line on invalid nesting (12640) or
   // nesting deeper than `max_depth` (12641).
+  // A growable file (a Stream) is indexed as far as it has text; extend() indexes what was
+  // appended since, finish() checks the nesting once the text is complete.
   ProgramIndex(const SourceFile& file, int max_depth, size_t max_line_length);
+  void extend(const SourceFile& file);
+  void finish() const;
 
   const ControlLink* link(size_t line_offset) const {
     auto it = links_.find(line_offset);
@@ -39,6 +44,18 @@ class ProgramIndex {
   }
 
  private:
+  struct Open {
+    std::string_view keyword;  // IF, WHILE, FOR, REPEAT, LOOP
+    TextPos pos;
+    TextPos else_pos;
+    bool has_else = false;
+  };
+  void scanLine(TextPos here, std::string_view line, std::string& norm);
+
+  int max_depth_;
+  size_t max_line_length_;
+  TextPos scanned_;          // where the next extend() starts
+  std::vector<Open> stack_;  // structures open at scanned_
   std::unordered_map<size_t, ControlLink> links_;
   std::unordered_map<std::string, TextPos, StringHash, std::equal_to<>> labels_;
 };
