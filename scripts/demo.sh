@@ -11,5 +11,6 @@ mkdir -p out
   examples/lentoax.MPF
 ./build/ncoffset --init examples/tools.INI -o out/pocket.csv examples/pocket.MPF
 ./build/ncoffset --init examples/tools.INI -o out/pocket.html examples/pocket.MPF
+./scripts/python-setup.sh
 echo "wrote out/frames.csv, out/lentoax.csv, out/pocket.csv and the report out/pocket.html:"
 cat out/frames.csv out/lentoax.csv out/pocket.csv

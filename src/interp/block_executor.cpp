@@ -67,7 +67,7 @@ void Interpreter::finishBlock() {
   if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
     moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
   if (moved) without_motion_ = 0;
-  if (stop_after_) stopEvent();
+  if (events_ && stop_after_) stopEvent();
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
   // compensated elements counts against MD20250.
   if (!moved && !block_.stmts.empty() && block_.stmts.front().kind == lang::StmtKind::Word)

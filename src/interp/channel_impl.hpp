@@ -27,7 +27,8 @@ class SwitchSink final : public PathSink {
   const interp::Interpreter* interp = nullptr;
 
   void segment(const Segment& s) override {
-    if (!pending_.empty()) release(placement->seq());
+    if (waiting_) [[unlikely]]
+      release(placement->seq());
     target->segment(s);
   }
   void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
@@ -61,6 +62,7 @@ class SwitchSink final : public PathSink {
       return;
     }
     pending_.push_back({sent, Event(e)});
+    waiting_ = true;
   }
   // Writes the events that follow motions before `seq` (all of them for -1).
   void release(long long seq) {
@@ -68,6 +70,7 @@ class SwitchSink final : public PathSink {
       deliver(pending_.front().event);
       pending_.pop_front();
     }
+    waiting_ = !pending_.empty();
   }
   void deliver(const Event& e) {
     std::visit(
@@ -82,6 +85,7 @@ class SwitchSink final : public PathSink {
         e);
   }
   std::deque<Pending> pending_;
+  bool waiting_ = false;  // !pending_.empty(), the one test per segment
 };
 
 // The chain of stages (docs/architecture.md): interpreter -> smooth approach -> radius

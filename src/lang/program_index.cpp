@@ -73,6 +73,8 @@ void ProgramIndex::extend(const SourceFile& file) {
     TextPos here = scanned_;
     if (!nextLine(text, scanned_, line)) break;
     if ((scanned_.offset & 0xFFFFF) < line.size() + 1) file.releaseBefore(here.offset);
+    if (line.size() > max_line_length_) continue;  // reported when executed
+    if (!mayHoldHead(line)) continue;              // the usual line: no call
     scanLine(here, line, norm);
   }
   file.releaseAll();
@@ -90,8 +92,6 @@ void ProgramIndex::finish() const {
 
 void ProgramIndex::scanLine(TextPos here, std::string_view line, std::string& norm) {
   std::vector<Open>& stack = stack_;
-  if (line.size() > max_line_length_) return;  // reported when executed
-  if (!mayHoldHead(line)) return;
   // Only the head of a line matters, except for IF (which may be a jump).
   std::string_view head = line.substr(0, 96);
   if (!normalizeLine(head, norm, nullptr)) return;
