@@ -203,3 +203,74 @@ INSTANTIATE_TEST_SUITE_P(Programs, StreamGolden, ::testing::ValuesIn(discover())
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace
+
+namespace {
+
+// The stream's own behaviour, beside the golden comparison.
+TEST(Stream, WaitsAtAForwardJumpUntilItsDestinationIsFed) {
+  Channel ch;
+  Recorder rec;
+  Stream s(ch, rec, "J.MPF");
+  s.feed("G1 X1 F100\nGOTOF END\nG1 X2\n");
+  // X1 is written (G40: nothing held back); the jump waits for END, X2 is not executed.
+  EXPECT_EQ(rec.records.size(), 2u);  // feed event, X1
+  s.feed("G1 X3\nEND:\nG1 X4\n");
+  s.finish();
+  ASSERT_EQ(rec.records.size(), 4u);
+  EXPECT_EQ(rec.records[2].substr(0, 6), "seg 6 ");  // X4 on line 6: X2 and X3 skipped
+  EXPECT_EQ(rec.records.back(), "end");
+}
+
+TEST(Stream, BackwardJumpsRunInTheKeptText) {
+  Channel ch;
+  Recorder rec;
+  Stream s(ch, rec, "L.MPF");
+  s.feed("R1=0\nG1 F100\nLOOP1: R1=R1+1\nG1 X=R1\n");
+  s.feed("IF R1<3 GOTOB LOOP1\nM30\n");
+  EXPECT_TRUE(s.ended());
+  EXPECT_FALSE(s.feed("G1 X99\n"));  // after M30: ignored
+  s.finish();
+  int segs = 0;
+  for (const auto& r : rec.records) segs += r.rfind("seg ", 0) == 0;
+  EXPECT_EQ(segs, 3);
+}
+
+TEST(Stream, ManySegmentsInOneFeedComeInBatches) {
+  std::string text = "G1 F100\n";
+  for (int i = 0; i < 3 * static_cast<int>(Stream::kBatch); ++i)
+    text += fmt::format("X{} Y{}\n", i % 50 + 1, i % 7);
+  Channel ch;
+  Recorder rec;
+  Stream s(ch, rec, "B.MPF");
+  s.feed(text);
+  EXPECT_EQ(rec.records.size(), 3 * Stream::kBatch + 1);  // the feed event and every segment
+  EXPECT_FALSE(s.finish().alarm);
+}
+
+TEST(Stream, DestroyedUnfinishedWritesNothingMore) {
+  Channel ch;
+  Recorder rec;
+  {
+    Stream s(ch, rec, "U.MPF");
+    s.feed("G1 X1 F100\nWHILE TRUE\n");
+  }
+  EXPECT_EQ(rec.finished, 0);
+  // The channel runs again afterwards.
+  Recorder again;
+  EXPECT_EQ(ch.runText("A.MPF", "G1 X5 F10\n", again).status, RunResult::Status::Ok);
+  EXPECT_EQ(again.records.back(), "end");
+}
+
+TEST(Stream, AnAlarmEndsTheStreamAndFinishesTheSinkOnce) {
+  Channel ch;
+  Recorder rec;
+  Stream s(ch, rec, "A.MPF");
+  EXPECT_FALSE(s.feed("G1 X1 F100\nR1=1/0\n"));
+  EXPECT_EQ(rec.finished, 1);
+  RunResult r = s.finish();
+  ASSERT_TRUE(r.alarm);
+  EXPECT_EQ(r.alarm->number, 14051);
+  EXPECT_EQ(rec.finished, 1);
+}
+
+}  // namespace
