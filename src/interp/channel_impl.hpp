@@ -39,7 +39,8 @@ class SwitchSink final : public PathSink {
       release(placement->seq());
     target->segment(s);
   }
-  void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
+  // MSG comes from the interpreter like the events and waits with them.
+  void message(const SourceLoc& l, const std::string& t) override { post(Message{l, t}); }
   void warning(const SourceLoc& l, int n, const std::string& t) override {
     target->warning(l, n, t);
   }
@@ -56,7 +57,12 @@ class SwitchSink final : public PathSink {
   void releaseAll() { release(-1); }
 
  private:
-  using Event = std::variant<ToolEvent, MFunctionEvent, DwellEvent, SpindleEvent, FeedEvent>;
+  struct Message {
+    SourceLoc where;
+    std::string text;
+  };
+  using Event =
+      std::variant<ToolEvent, MFunctionEvent, DwellEvent, SpindleEvent, FeedEvent, Message>;
   struct Pending {
     long long after;  // the motions sent before the event
     Event event;
@@ -90,6 +96,7 @@ class SwitchSink final : public PathSink {
           if constexpr (std::is_same_v<T, DwellEvent>) target->dwell(v);
           if constexpr (std::is_same_v<T, SpindleEvent>) target->spindle(v);
           if constexpr (std::is_same_v<T, FeedEvent>) target->feed(v);
+          if constexpr (std::is_same_v<T, Message>) target->message(v.where, v.text);
         },
         e);
   }

@@ -274,3 +274,24 @@ TEST(Stream, AnAlarmEndsTheStreamAndFinishesTheSinkOnce) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Events, MsgBetweenCompensatedBlocksComesAfterTheSegmentsBeforeIt) {
+  Channel ch;
+  Recorder rec;
+  Recorder ignored;
+  ASSERT_EQ(ch.runInitText("T.INI", "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=5\nM17\n", ignored).status,
+            RunResult::Status::Ok);
+  ch.runText("M.MPF",
+             "T1 D1\nG1 F200 X0 Y0\nG41 X10 Y0\nMSG(\"corner\")\nX10 Y20\nX0 Y20\nG40 X-10 Y30\n",
+             rec);
+  std::vector<std::string> kinds;
+  for (const auto& r : rec.records) kinds.push_back(r.substr(0, r.find(' ')));
+  // The selection block (line 3) is written once line 5 is known; the MSG of line 4 follows it.
+  const std::vector<std::string> expected = {"tool", "tool", "feed", "seg", "msg",
+                                             "seg",  "seg",  "seg",  "end"};
+  EXPECT_EQ(kinds, expected);
+}
+
+}  // namespace
