@@ -5,9 +5,11 @@
 #include "ncoffset/stream.hpp"
 
 #include <condition_variable>
+#include <exception>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -79,6 +81,8 @@ struct Stream::Impl {
       }
       result = channel.impl_->run(source, recorder, false, false);
     } catch (const Abandoned&) {
+    } catch (...) {
+      failure = std::current_exception();  // rethrown on the caller's side, as runText would
     }
     std::lock_guard<std::mutex> l(mu);
     done = true;
@@ -116,6 +120,7 @@ struct Stream::Impl {
         cv.wait(l, [this] { return !worker_turn; });
       }
       deliver();
+      if (failure) std::rethrow_exception(std::exchange(failure, nullptr));
       if (done || waiting_text) break;
     }
     if (done && !sink_finished) {
@@ -150,6 +155,7 @@ struct Stream::Impl {
   std::string partial;  // a line fed without its end
   std::vector<Record> records;
   RunResult result;
+  std::exception_ptr failure;  // an exception other than an alarm, from the worker
   bool sink_finished = false;
 
   std::mutex mu;
