@@ -64,6 +64,8 @@ class Channel {
   // Runs the part program. Subprograms are searched beside it.
   RunResult runProgram(const std::filesystem::path& file, PathSink& sink);
   // Runs program text held in memory (tests, fuzzing); `dir` is where subprograms are searched.
+  // Each call is a whole program: its end flushes radius compensation's look-ahead (the modal
+  // state stays). To feed one program piece by piece, use ncoffset::Stream (stream.hpp).
   RunResult runText(const std::string& name, const std::string& text, PathSink& sink,
                     const std::filesystem::path& dir = {});
 
