@@ -25,9 +25,14 @@ if not glob.glob(os.path.join(d, "ncoffset" + sysconfig.get_config_var("EXT_SUFF
     print(f"{sys.executable}: not set up (the module is built for another Python version)")
     sys.exit(0)
 site = sysconfig.get_paths()["purelib"]
-os.makedirs(site, exist_ok=True)
-with open(os.path.join(site, "ncoffset.pth"), "w") as f:
-    f.write(d + "\n")
+try:
+    os.makedirs(site, exist_ok=True)
+    with open(os.path.join(site, "ncoffset.pth"), "w") as f:
+        f.write(d + "\n")
+except OSError as e:  # not root: say how to use it instead of failing the demo
+    print(f"{sys.executable}: cannot write {site}/ncoffset.pth ({e.strerror}); "
+          f"use: export PYTHONPATH={d}")
+    sys.exit(0)
 try:
     import numpy  # noqa: F401
     extra = ""
