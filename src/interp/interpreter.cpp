@@ -86,6 +86,7 @@ std::string Interpreter::alarmSourceLine(const AlarmError& e) const {
 void Interpreter::run(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
   ended_ = false;
+  events_ = sink_.wantsEvents();
   flow_.begin(program);
   vars_.beginRun();
   resetCalls();

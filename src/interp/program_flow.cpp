@@ -152,8 +152,34 @@ void ProgramFlow::continueAfter(const TextPos& line) {
   lang::nextLine(lvl.program->source->text(), lvl.pos, skip);
 }
 
+bool ProgramFlow::waitForText() const {
+  LoadedProgram& prog = *levels_.back().program;
+  if (!prog.source->growing()) return false;
+  const bool more = prog.source->waitForMore();
+  if (!more) prog.source->complete();
+  prog.index->extend(*prog.source);
+  prog.block_numbers.clear();  // found again with the new lines
+  if (!more) prog.index->finish();
+  return more;
+}
+
+bool ProgramFlow::nextLineFed(std::string_view& text) {
+  ProgramLevel& lvl = levels_.back();
+  // A repeated section ends at its end line, known when it started; the level over the growing
+  // text itself (never an archive range) reads what was fed since its text was taken, which
+  // may be more than its view holds after a wait at a jump or a structure.
+  if (lvl.section) return false;
+  do {
+    lvl.text = lvl.program->source->text();
+    if (lang::nextLine(lvl.text, lvl.pos, text)) return true;
+  } while (waitForText());
+  return false;
+}
+
 const lang::ControlLink& ProgramFlow::link(size_t offset) const {
   const lang::ControlLink* l = levels_.back().program->index->link(offset);
+  // A structure of a fed program whose end has not been fed yet: wait for it.
+  while (!l && waitForText()) l = levels_.back().program->index->link(offset);
   if (!l)
     raise(AlarmNumber::ControlNesting,
           "invalid nesting of control structures: statement must stand at the start of its block");
@@ -193,6 +219,16 @@ const std::vector<TextPos>& ProgramFlow::blockNumberLines(LoadedProgram& prog, l
 
 bool ProgramFlow::jumpToBlockNumber(long long n, size_t here, JumpSearch search) {
   ProgramLevel& lvl = levels_.back();
+  if (search.forward && lvl.program->source->growing()) {
+    // A fed program: the forward search needs the text up to the destination (or all of it).
+    auto ahead = [&] {
+      for (const auto& p : blockNumberLines(*lvl.program, n))
+        if (p.offset > here) return true;
+      return false;
+    };
+    while (!ahead() && waitForText()) {
+    }
+  }
   const std::vector<TextPos>& lines = blockNumberLines(*lvl.program, n);
   // The nearest occurrence in the search direction: forward first, then backward.
   if (search.forward)
@@ -213,6 +249,17 @@ bool ProgramFlow::jumpToBlockNumber(long long n, size_t here, JumpSearch search)
 bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch search) {
   ProgramLevel& lvl = levels_.back();
   const std::vector<TextPos>* lines = lvl.program->index->labels(label);
+  // A fed program: a forward search waits until an occurrence after `here` is fed (one before
+  // it does not satisfy a forward search), or the text is complete. The index grows while
+  // waiting, so the lines are looked up again.
+  if (search.forward && lvl.program->source->growing()) {
+    auto ahead = [&] {
+      lines = lvl.program->index->labels(label);
+      return lines && lines->back().offset > here;
+    };
+    while (!ahead() && waitForText()) {
+    }
+  }
   if (!lines) return false;
   // The first occurrence the search meets (PM-NC "Program jumps": the destination is searched
   // from the jumping block in the jump's direction), so a label may stand more than once. The

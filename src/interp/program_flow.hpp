@@ -103,7 +103,8 @@ class ProgramFlow {
   bool nextLine(std::string_view& text, lang::TextPos& at) {
     ProgramLevel& lvl = levels_.back();
     at = lvl.pos;
-    return lang::nextLine(lvl.text, lvl.pos, text);
+    if (lang::nextLine(lvl.text, lvl.pos, text)) return true;
+    return lvl.program->source->growing() && nextLineFed(text);
   }
   // A subprogram call with pass count P (alarms 14012 too deep, 12160 pass count, 14011 not
   // found).
@@ -156,6 +157,11 @@ class ProgramFlow {
                              std::map<std::string, LoadedProgram*>& into);
 
  private:
+  // A growable program (Stream) at the end of its text: waits for more (the control reads a
+  // program block by block in the same way), then reads on. False once the text is complete.
+  bool nextLineFed(std::string_view& text);
+  // Waits for more text of the current level's program and indexes it; false when complete.
+  bool waitForText() const;
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
   LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
   LoadedProgram& indexed(LoadedProgram& prog);
