@@ -77,6 +77,12 @@ void ProgramIndex::extend(const SourceFile& file) {
     if ((scanned_.offset & 0xFFFFF) < line.size() + 1) file.releaseBefore(here.offset);
     if (line.size() > max_line_length_) continue;  // reported when executed
     if (!mayHoldHead(line)) continue;              // the usual line: no call
+    if (line.front() == '%' && here.offset > 0 && file.fed()) {
+      // A fed text archive: the program ends before its second header, as the archived
+      // program's range does when the whole text is loaded (docs/architecture.md "Streaming").
+      end_ = here.offset;
+      break;
+    }
     scanLine(here, line, norm);
   }
   file.releaseAll();

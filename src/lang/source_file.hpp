@@ -37,6 +37,8 @@ class SourceFile {
 
   // Growable texts (Stream): more may follow. Appending beyond the capacity returns false.
   bool growing() const { return more_ != nullptr; }
+  // Made by growable(): fed piece by piece, complete or not.
+  bool fed() const { return grow_ != nullptr; }
   bool append(std::string_view text);
   // Waits for more text (see growable()); false when the text is complete.
   bool waitForMore() const { return more_ && more_(); }
