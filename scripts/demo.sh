@@ -13,5 +13,6 @@ mkdir -p out
 ./build/ncoffset --init examples/tools.INI -o out/pocket.html examples/pocket.MPF
 ./build/ncoffset --init examples/lathe.INI --init examples/lathe_tools.INI --view zx \
   -o out/lathe.html examples/lathe.MPF
+./scripts/python-setup.sh
 echo "wrote out/frames.csv, out/lentoax.csv, out/pocket.csv and the reports out/pocket.html, out/lathe.html:"
 cat out/frames.csv out/lentoax.csv out/pocket.csv

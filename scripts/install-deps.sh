@@ -2,7 +2,8 @@
 # Installs the Debian packages ncoffset builds and tests with (only those that are missing).
 set -euo pipefail
 packages=(cmake ninja-build g++ clang-14 clang-format-14 libclang-rt-14-dev libfmt-dev libcli11-dev
-          libgtest-dev libgmock-dev libbenchmark-dev python3 pkg-config)
+          libgtest-dev libgmock-dev libbenchmark-dev python3 pkg-config
+          python3-dev pybind11-dev python3-numpy python3-pytest)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -55,6 +55,8 @@ struct RunResult {
   std::string file_error;      // when status == FileError
 };
 
+class Stream;
+
 class Channel {
  public:
   explicit Channel(RunOptions options = {});
@@ -67,6 +69,8 @@ class Channel {
   // Runs the part program. Subprograms are searched beside it.
   RunResult runProgram(const std::filesystem::path& file, PathSink& sink);
   // Runs program text held in memory (tests, fuzzing); `dir` is where subprograms are searched.
+  // Each call is a whole program: its end flushes radius compensation's look-ahead (the modal
+  // state stays). To feed one program piece by piece, use ncoffset::Stream (stream.hpp).
   RunResult runText(const std::string& name, const std::string& text, PathSink& sink,
                     const std::filesystem::path& dir = {});
 
@@ -84,6 +88,7 @@ class Channel {
   void writeVariablesJson(std::ostream& out) const;
 
  private:
+  friend class Stream;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -35,6 +35,40 @@ struct Segment {
   bool has_feed = false;
 };
 
+// Events besides motion, for machine simulations (docs/architecture.md "Events"). Each carries
+// the block's source line and file index (as Segment). A sink receives an event after the
+// segments of the blocks before it and before the segments of its own block: the words of a
+// block act before its motion, as the auxiliary functions do with output before the motion
+// (MD22200 AUXFU_M_SYNC_TYPE = 0), except M0/M1, which stop after it.
+struct ToolEvent {
+  enum class Word { T, D, M6 } word = Word::T;  // what the block programmed
+  int line = 0, file = 0;
+  int tool = 0;          // the T number selected (T) or active (D, M6)
+  int edge = 0;          // the active D number (0: no offset)
+  double radius = 0;     // the active edge's radius (mm)
+  Vec3 length;           // the active length vector in the BCS (tool tip -> carrier reference)
+  bool changed = false;  // T: the tool became active at once (MD22550 = 0, no M6 needed)
+};
+struct MFunctionEvent {
+  int line = 0, file = 0;
+  int number = 0;   // M3, M8, ... (M2, M17, M30 end the program: PathSink::finish instead)
+  int spindle = 0;  // address extension M2=3 -> 2; 0 without one
+};
+struct DwellEvent {
+  int line = 0, file = 0;
+  double seconds = 0;      // G4 F..
+  double revolutions = 0;  // G4 S.. (of the master spindle)
+};
+struct SpindleEvent {
+  int line = 0, file = 0;
+  double speed = 0;  // S value as programmed (rev/min)
+  int spindle = 0;   // address extension S2=...; 0 without one (the master spindle)
+};
+struct FeedEvent {
+  int line = 0, file = 0;
+  double feed = 0;  // the modal feed after the block, mm/min (G94) or mm/rev (G95)
+};
+
 // Receives the path as it is produced, block by block (streaming).
 class PathSink {
  public:
@@ -50,6 +84,14 @@ class PathSink {
   virtual void programmed(const Segment&) {}
   // Whether programmed() is wanted at all (asked once per run; computing it costs time).
   virtual bool wantsProgrammed() const { return false; }
+  // Whether the events below are wanted (asked once per run; blocks without these words cost
+  // nothing either way).
+  virtual bool wantsEvents() const { return false; }
+  virtual void tool(const ToolEvent&) {}
+  virtual void mFunction(const MFunctionEvent&) {}
+  virtual void dwell(const DwellEvent&) {}
+  virtual void spindle(const SpindleEvent&) {}
+  virtual void feed(const FeedEvent&) {}
   // The run ended: normally (alarm == nullptr) or by an alarm.
   virtual void finish(const Alarm* alarm) = 0;
 };

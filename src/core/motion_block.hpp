@@ -39,6 +39,9 @@ struct MotionBlock {
   bool has_feed = false;
   int line = 0;
   int file = 0;
+  // The number of the interpreter's motion in the run (1, 2, ...): what the stages make of it
+  // keeps it, so the channel orders events against the segments (docs/architecture.md "Events").
+  long long seq = 0;
   SarRequest sar;  // smooth approach / retraction of the block (kind None for every other block)
 };
 

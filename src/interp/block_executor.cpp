@@ -54,6 +54,7 @@ void Interpreter::finishBlock() {
   feed_before_ = modal_.feed;
   if (words_.f && !words_.dwell)
     modal_.feed = modal_.units == Units::G700 ? *words_.f * 25.4 : *words_.f;
+  if (events_) blockEvents(feed_before_);
   bool any_axis = words_.axis[0] || words_.axis[1] || words_.axis[2];
   bool circle_words = words_.centre[0] || words_.centre[1] || words_.centre[2] || words_.cr ||
                       words_.ar || words_.turn;
@@ -66,6 +67,7 @@ void Interpreter::finishBlock() {
   if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
     moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
   if (moved) without_motion_ = 0;
+  if (events_ && stop_after_) stopEvent();
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
   // compensated elements counts against MD20250.
   if (!moved && !block_.stmts.empty() && block_.stmts.front().kind == lang::StmtKind::Word)

@@ -98,6 +98,12 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
       return;
     }
     case 'S':
+      if (events_) {
+        spindleEvent(value(), st.ext);
+        return;
+      }
+      value();
+      return;
     case 'H':
       value();
       return;  // spindle speed, auxiliary function: no path effect
@@ -126,6 +132,7 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
         raise(AlarmNumber::ValueRange, fmt::format("value range exceeded: M{}", m));
       // M6 (MD22560) changes the tool for the master spindle (MD20090 = 1).
       if (m == data_.get(md_change_m_) && st.ext <= 1) words_.tool_change = true;
+      if (events_) mFunctionEvent(m, st.ext);
       if (st.ext > 0) return;  // M2=3: function of spindle 2
       if (m == 2 || m == 30)
         words_.end_program = true;

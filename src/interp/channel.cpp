@@ -5,95 +5,37 @@
 
 #include <algorithm>
 
-#include "interp/interpreter.hpp"
-#include "place/placement.hpp"
-#include "trc/radius_compensation.hpp"
-#include "trc/smooth_approach.hpp"
+#include "interp/channel_impl.hpp"
 
 namespace ncoffset {
 
-namespace {
-// The transverse axis as diameter values (--diameter, docs/turning.md): positions and centres
-// times 2. Lines stay lines; an arc's drawing would be an ellipse, which is why the drawings
-// (SVG, HTML) are never asked for it.
-Segment asDiameter(Segment s, int axis) {
-  s.start[axis] *= 2;
-  s.end[axis] *= 2;
-  s.centre[axis] *= 2;
-  return s;
-}
-
-// Forwards to whichever sink the current run writes to.
-class SwitchSink final : public PathSink {
- public:
-  PathSink* target = nullptr;
-  void segment(const Segment& s) override { target->segment(s); }
-  void message(const SourceLoc& l, const std::string& t) override { target->message(l, t); }
-  void warning(const SourceLoc& l, int n, const std::string& t) override {
-    target->warning(l, n, t);
-  }
-  void programmed(const Segment& s) override { target->programmed(s); }
-  bool wantsProgrammed() const override { return target && target->wantsProgrammed(); }
-  void finish(const Alarm* a) override { target->finish(a); }
-};
-
-// Between SwitchSink and the run's sink with --diameter only (the usual run pays nothing).
-class DiameterSink final : public PathSink {
- public:
-  PathSink* next = nullptr;
-  int axis = 0;
-  void segment(const Segment& s) override { next->segment(asDiameter(s, axis)); }
-  void message(const SourceLoc& l, const std::string& t) override { next->message(l, t); }
-  void warning(const SourceLoc& l, int n, const std::string& t) override { next->warning(l, n, t); }
-  void programmed(const Segment& s) override { next->programmed(asDiameter(s, axis)); }
-  bool wantsProgrammed() const override { return next && next->wantsProgrammed(); }
-  void finish(const Alarm* a) override { next->finish(a); }
-};
-}  // namespace
-
-// The chain of stages (docs/architecture.md): interpreter -> smooth approach -> radius
-// compensation -> placement -> sink. Each stage knows only the one after it.
-struct Channel::Impl {
-  explicit Impl(const RunOptions& o)
-      : diameter_output(o.diameter_output),
-        placement(sink, o.coords),
-        trc(placement),
-        sar(trc),
-        interp(o, sink, sar) {}
-  bool diameter_output;
-  DiameterSink diameter;
-  SwitchSink sink;
-  place::Placement placement;
-  trc::RadiusCompensation trc;
-  trc::SmoothApproach sar;
-  interp::Interpreter interp;
-
-  RunResult run(std::shared_ptr<lang::SourceFile> src, PathSink& out, bool init, bool finish) {
-    sink.target = &out;
-    placement.beginRun([this](int id) -> const std::string& { return interp.fileName(id); });
-    RunResult r;
-    try {
-      interp::LoadedProgram& prog = interp.load(std::move(src), init);
-      if (diameter_output && !init) {  // after load: the alarm names the program
-        diameter.axis = interp.transverseAxis();
-        if (diameter.axis < 0)
-          raise(AlarmNumber::NoTransverseAxis,
-                "no transverse axis for --diameter: MD20100 $MC_DIAMETER_AX_DEF names none");
-        diameter.next = &out;
-        sink.target = &diameter;
-      }
-      interp.run(prog, init);
-    } catch (const AlarmError& e) {
-      r.status = RunResult::Status::Alarm;
-      r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text(), interp.alarmSourceLine(e)};
-    } catch (const std::bad_alloc&) {
-      r.status = RunResult::Status::Alarm;
-      r.alarm = Alarm{toInt(AlarmNumber::ArrayTooLarge), {}, "out of memory", {}};
+RunResult Channel::Impl::run(std::shared_ptr<lang::SourceFile> src, PathSink& out, bool init,
+                             bool finish) {
+  sink.target = &out;
+  placement.beginRun([this](int id) -> const std::string& { return interp.fileName(id); });
+  RunResult r;
+  try {
+    interp::LoadedProgram& prog = interp.load(std::move(src), init);
+    if (diameter_output && !init) {  // after load: the alarm names the program
+      diameter.axis = interp.transverseAxis();
+      if (diameter.axis < 0)
+        raise(AlarmNumber::NoTransverseAxis,
+              "no transverse axis for --diameter: MD20100 $MC_DIAMETER_AX_DEF names none");
+      diameter.next = &out;
+      sink.target = &diameter;
     }
-    if (finish || r.alarm) out.finish(r.alarm ? &*r.alarm : nullptr);
-    return r;
+    interp.run(prog, init);
+  } catch (const AlarmError& e) {
+    r.status = RunResult::Status::Alarm;
+    r.alarm = Alarm{e.number(), interp.alarmLoc(e), e.text(), interp.alarmSourceLine(e)};
+  } catch (const std::bad_alloc&) {
+    r.status = RunResult::Status::Alarm;
+    r.alarm = Alarm{toInt(AlarmNumber::ArrayTooLarge), {}, "out of memory", {}};
   }
-};
+  sink.releaseAll();
+  if (finish || r.alarm) out.finish(r.alarm ? &*r.alarm : nullptr);
+  return r;
+}
 
 Channel::Channel(RunOptions options) {
   Limits& l = options.limits;  // what the stack and memory allow (docs/limits.md)

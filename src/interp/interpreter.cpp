@@ -86,6 +86,7 @@ std::string Interpreter::alarmSourceLine(const AlarmError& e) const {
 void Interpreter::run(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
   ended_ = false;
+  events_ = sink_.wantsEvents();
   flow_.begin(program);
   vars_.beginRun();
   resetCalls();
@@ -121,7 +122,18 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
       raise(AlarmNumber::LineTooLong,
             fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",
                         text.size(), max_len));
-    if (!text.empty() && text.front() == '%') continue;  // archive header %_N_NAME_MPF
+    if (!text.empty() && text.front() == '%') {  // archive header %_N_NAME_MPF
+      // A fed text archive (docs/architecture.md "Streaming"): the program ends before the
+      // next program's header, as its range ends when the whole archive is loaded.
+      if (lvl.program->source->fed() && line_pos_.offset > 0) [[unlikely]] {
+        if (flow_.depth() > 1) {
+          returnFromSubprogram();
+          continue;
+        }
+        break;
+      }
+      continue;
+    }
     if (!macros_.empty()) [[unlikely]]
       if (macros_.expand(text, expanded_, max_len)) text = expanded_;
     lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});

@@ -49,6 +49,8 @@ class Interpreter final : public lang::Environment {
   // The transverse axis of MD20100 (0 X, 1 Y, 2 Z; -1 none).
   int transverseAxis() const;
   void writeVariablesJson(std::ostream& out) const;
+  // How many motions went to the first stage (events are ordered against them).
+  long long motionsSent() const { return motion_.motionsSent(); }
   void setSearchDir(std::filesystem::path dir) { flow_.setSearchDir(std::move(dir)); }
   void setSearchPath(std::vector<std::filesystem::path> path) {
     flow_.setSearchPath(std::move(path));
@@ -65,6 +67,12 @@ class Interpreter final : public lang::Environment {
   // --- program flow (interpreter.cpp) ---
   void executeBlock();
   void executeControl(const lang::Stmt& st, size_t index, bool& jumped);
+  // --- events for simulations (events.cpp; only when the sink wants them) ---
+  void mFunctionEvent(double m, int ext);
+  void spindleEvent(double s, int ext);
+  void toolEvent();
+  void blockEvents(double feed_before);
+  void stopEvent();
   // control_statements.cpp
   void ifStatement(const lang::Stmt& st, size_t index, bool& jumped);
   bool loopStatement(const lang::Stmt& st, bool& jumped);
@@ -222,6 +230,12 @@ class Interpreter final : public lang::Environment {
   size_t for_continue_ = static_cast<size_t>(-1);
   bool ended_ = false;
   bool init_file_ = false;
+  bool events_ = false;      // the sink wants events (PathSink::wantsEvents)
+  bool stop_after_ = false;  // M0/M1 in this block: the event follows its motion
+  int stop_m_ = 0;
+  bool has_s_ = false;  // the block's S word (events only): speed, or G4 revolutions
+  double dwell_s_ = 0;
+  int dwell_s_ext_ = 0;
 
   FrameState frames_;
   int md_max_disc_ = 0;                                // MD20220, looked up once

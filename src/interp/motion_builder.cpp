@@ -92,6 +92,7 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   compensationSettings(modal);
   checkRange(plain);
   sarRequest(w, modal, at);
+  ++m.seq;
   core::Feedback back = next_.motion(m);
   if (back.approach) approach_points_ = *back.approach;
   if (back.end_point) to = *back.end_point;  // implicit retraction end point

@@ -35,6 +35,8 @@ class MotionBuilder {
 
   // The last programmed point in the WCS ($P_EP) and the tool tip in the BCS.
   Vec3 wcs() const { return wcs_; }
+  // How many motions went to the next stage in this channel (the last MotionBlock::seq).
+  long long motionsSent() const { return m_.seq; }
   Vec3 bcs() const { return bcs_; }
   // The tool's position in the MCS where the last block left it ($AA_IM): the BCS point plus
   // the tool length as the axes have taken it up.

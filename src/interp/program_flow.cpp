@@ -60,10 +60,32 @@ LoadedProgram* ProgramFlow::find(std::string_view name) {
   if (auto it = main_archive_.find(key); it != main_archive_.end()) prog = it->second;
   if (!prog) prog = findIn(search_dir_, key);
   for (size_t k = 0; !prog && k < search_path_.size(); ++k) prog = findIn(search_path_[k], key);
+  if (!prog) prog = findInFedArchive(key);
   if (!prog) return nullptr;
   indexed(*prog);  // every caller gets a program it can run
   by_name_.emplace(key, prog);
   return prog;
+}
+
+LoadedProgram* ProgramFlow::findInFedArchive(const std::string& key) {
+  if (levels_.empty() || fed_archive_loaded_) return nullptr;
+  LoadedProgram& main = *levels_.front().program;
+  if (!main.source->fed()) return nullptr;
+  while (waitForTextOf(main)) {
+  }
+  fed_archive_loaded_ = true;
+  const size_t first = files_.size();
+  loadArchive(main.source, main_archive_);
+  if (files_.size() > first) {
+    // The archive's first program is the one running (the fed program from its top): one file,
+    // one id, numbered as when the whole archive is loaded.
+    for (auto& named : main_archive_)
+      if (named.second == files_[first].get()) named.second = &main;
+    files_.erase(files_.begin() + static_cast<std::ptrdiff_t>(first));
+    for (size_t k = first; k < files_.size(); ++k) files_[k]->file_id = static_cast<int>(k);
+  }
+  auto it = main_archive_.find(key);
+  return it == main_archive_.end() ? nullptr : it->second;
 }
 
 // One place of the search: a directory, or a text archive holding several programs.
@@ -152,8 +174,40 @@ void ProgramFlow::continueAfter(const TextPos& line) {
   lang::nextLine(lvl.program->source->text(), lvl.pos, skip);
 }
 
+bool ProgramFlow::waitForText() const {
+  return waitForTextOf(*levels_.back().program);
+}
+
+bool ProgramFlow::waitForTextOf(LoadedProgram& prog) {
+  if (!prog.source->growing()) return false;
+  const bool more = prog.source->waitForMore();
+  if (!more) prog.source->complete();
+  prog.index->extend(*prog.source);
+  prog.block_numbers.clear();  // found again with the new lines
+  if (!more) prog.index->finish();
+  return more;
+}
+
+bool ProgramFlow::nextLineFed(std::string_view& text) {
+  ProgramLevel& lvl = levels_.back();
+  // A repeated section ends at its end line, an archived program at the next header, both known
+  // when the level started; the level over a growing text (never an archive range) reads what
+  // was fed since its view was taken: a wait at a jump or a structure may have fed more, and
+  // completed the text (then the source is no longer growing).
+  const lang::SourceFile& src = *lvl.program->source;
+  if (lvl.section || lvl.program->end != kNoOffset) return false;
+  if (!src.growing() && lvl.text.size() == src.text().size()) return false;
+  do {
+    lvl.text = lvl.program->source->text();
+    if (lang::nextLine(lvl.text, lvl.pos, text)) return true;
+  } while (waitForText());
+  return false;
+}
+
 const lang::ControlLink& ProgramFlow::link(size_t offset) const {
   const lang::ControlLink* l = levels_.back().program->index->link(offset);
+  // A structure of a fed program whose end has not been fed yet: wait for it.
+  while (!l && waitForText()) l = levels_.back().program->index->link(offset);
   if (!l)
     raise(AlarmNumber::ControlNesting,
           "invalid nesting of control structures: statement must stand at the start of its block");
@@ -193,6 +247,16 @@ const std::vector<TextPos>& ProgramFlow::blockNumberLines(LoadedProgram& prog, l
 
 bool ProgramFlow::jumpToBlockNumber(long long n, size_t here, JumpSearch search) {
   ProgramLevel& lvl = levels_.back();
+  if (search.forward && lvl.program->source->growing()) {
+    // A fed program: the forward search needs the text up to the destination (or all of it).
+    auto ahead = [&] {
+      for (const auto& p : blockNumberLines(*lvl.program, n))
+        if (p.offset > here) return true;
+      return false;
+    };
+    while (!ahead() && waitForText()) {
+    }
+  }
   const std::vector<TextPos>& lines = blockNumberLines(*lvl.program, n);
   // The nearest occurrence in the search direction: forward first, then backward.
   if (search.forward)
@@ -212,7 +276,10 @@ bool ProgramFlow::jumpToBlockNumber(long long n, size_t here, JumpSearch search)
 
 bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch search) {
   ProgramLevel& lvl = levels_.back();
-  const std::vector<TextPos>* lines = lvl.program->index->labels(label);
+  // A fed program: a forward search waits until an occurrence after `here` is fed (one before
+  // it does not satisfy a forward search), or the text is complete.
+  const std::vector<TextPos>* lines =
+      search.forward ? labelLinesFrom(label, here + 1) : lvl.program->index->labels(label);
   if (!lines) return false;
   // The first occurrence the search meets (PM-NC "Program jumps": the destination is searched
   // from the jumping block in the jump's direction), so a label may stand more than once. The

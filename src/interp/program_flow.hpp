@@ -103,7 +103,8 @@ class ProgramFlow {
   bool nextLine(std::string_view& text, lang::TextPos& at) {
     ProgramLevel& lvl = levels_.back();
     at = lvl.pos;
-    return lang::nextLine(lvl.text, lvl.pos, text);
+    if (lang::nextLine(lvl.text, lvl.pos, text)) return true;
+    return nextLineFed(text);  // out of line: only at the end of a level's text
   }
   // A subprogram call with pass count P (alarms 14012 too deep, 12160 pass count, 14011 not
   // found).
@@ -129,6 +130,9 @@ class ProgramFlow {
   bool nextSection();
   // The label lines of `label` in the current program (nullptr if there is none).
   const std::vector<lang::TextPos>* labelLines(std::string_view label) const;
+  // The same; in a fed program it first waits until an occurrence at or after offset `from` is
+  // fed, or the text is complete (a forward search must not decide on a part of the text).
+  const std::vector<lang::TextPos>* labelLinesFrom(std::string_view label, size_t from) const;
 
   // --- jumps in the current level ---
   // The level reads next from the line after `line`.
@@ -156,6 +160,16 @@ class ProgramFlow {
                              std::map<std::string, LoadedProgram*>& into);
 
  private:
+  // A growable program (Stream) at the end of its text (or of the view a level took of it
+  // before a wait at a jump or structure fed more): waits for more (the control reads a
+  // program block by block in the same way), then reads on. False once the text is complete.
+  bool nextLineFed(std::string_view& text);
+  // Waits for more text of the current level's program and indexes it; false when complete.
+  bool waitForText() const;
+  static bool waitForTextOf(LoadedProgram& prog);
+  // A call that finds no program in a fed main program: the main program may be a text
+  // archive, whose programs are known once its whole text is; waits for it (once).
+  LoadedProgram* findInFedArchive(const std::string& key);
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
   LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
   LoadedProgram& indexed(LoadedProgram& prog);
@@ -172,6 +186,7 @@ class ProgramFlow {
   // The programs of each archive (the main program's, --path entries), by upper-case name.
   std::map<std::filesystem::path, std::map<std::string, LoadedProgram*>> archives_;
   std::map<std::string, LoadedProgram*> main_archive_;  // the archive given as the program
+  bool fed_archive_loaded_ = false;
   std::vector<ProgramLevel> levels_;
   int failed_file_ = -1;
 };

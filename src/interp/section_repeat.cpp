@@ -54,6 +54,16 @@ const std::vector<TextPos>* ProgramFlow::labelLines(std::string_view label) cons
   return levels_.back().program->index->labels(label);
 }
 
+const std::vector<TextPos>* ProgramFlow::labelLinesFrom(std::string_view label, size_t from) const {
+  const lang::ProgramIndex& index = *levels_.back().program->index;
+  const std::vector<TextPos>* lines = index.labels(label);
+  // The index grows while waiting (its vectors may move): looked up again after each wait.
+  while (levels_.back().program->source->growing() && !(lines && lines->back().offset >= from) &&
+         waitForText())
+    lines = index.labels(label);
+  return lines;
+}
+
 // --- Interpreter ----------------------------------------------------------------------------
 
 namespace {
@@ -88,13 +98,15 @@ void Interpreter::repeatSection(const lang::Stmt& st, bool& jumped) {
   const std::string_view start_name = b.node(st.target).text;
   // REPEATB and REPEAT A B look for the start towards the program start first, then towards its
   // end; REPEAT A repeats what stands between A and itself, so A must come before it.
-  const TextPos* start = nearest(flow_.labelLines(start_name), here, single_block || two_labels);
+  const bool forward_too = single_block || two_labels;
+  const TextPos* start = nearest(flow_.labelLines(start_name), here, forward_too);
+  if (!start && forward_too)  // a fed program: the forward search waits for the start
+    start = nearest(flow_.labelLinesFrom(start_name, here + 1), here, true);
   if (!start)
     raise(AlarmNumber::JumpNotFound,
           fmt::format("jump destination {} not found ({} search for the start of the repeated "
                       "section)",
-                      start_name,
-                      single_block || two_labels ? "backward, then forward" : "backward"));
+                      start_name, forward_too ? "backward, then forward" : "backward"));
   Section s;
   s.start = *start;
   if (single_block) {
@@ -102,7 +114,8 @@ void Interpreter::repeatSection(const lang::Stmt& st, bool& jumped) {
     s.inclusive = true;
   } else if (two_labels) {
     const std::string_view end_name = b.node(st.expr2).text;
-    const TextPos* end = firstFrom(flow_.labelLines(end_name), start->offset, kNoOffset);
+    const TextPos* end =
+        firstFrom(flow_.labelLinesFrom(end_name, start->offset), start->offset, kNoOffset);
     if (!end)
       raise(AlarmNumber::JumpNotFound,
             fmt::format("jump destination {} not found (the end of the repeated section is "

@@ -23,6 +23,7 @@ void Interpreter::executeToolWords() {
   ctx.mirrored = frames_.active().mirror;
   tools_.execute({words_.tool, words_.edge, words_.tool_change}, data_.get(md_change_mode_) == 0,
                  ctx);
+  if (events_) toolEvent();
 }
 
 Value Interpreter::callLentoax(std::span<const Value> args) {

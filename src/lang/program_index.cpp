@@ -10,13 +10,6 @@
 namespace ncoffset::lang {
 namespace {
 
-struct Open {
-  std::string_view keyword;  // IF, WHILE, FOR, REPEAT, LOOP
-  TextPos pos;
-  TextPos else_pos;
-  bool has_else = false;
-};
-
 std::string_view closerOf(std::string_view opener) {
   if (opener == "IF") return "ENDIF";
   if (opener == "WHILE") return "ENDWHILE";
@@ -67,83 +60,101 @@ bool mayHoldHead(std::string_view s) {
 }  // namespace
 
 ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_line_length,
-                           TextPos begin, size_t end) {
+                           TextPos begin, size_t end)
+    : max_depth_(max_depth), max_line_length_(max_line_length), scanned_(begin), end_(end) {
+  extend(file);
+  if (!file.growing()) finish();
+}
+
+void ProgramIndex::extend(const SourceFile& file) {
   std::string_view text = file.text();
-  if (end < text.size()) text = text.substr(0, end);
-  TextPos pos = begin;
+  if (end_ < text.size()) text = text.substr(0, end_);
   std::string_view line;
   std::string norm;
-  std::vector<Open> stack;
   while (true) {
-    TextPos here = pos;
-    if (!nextLine(text, pos, line)) break;
-    if ((pos.offset & 0xFFFFF) < line.size() + 1) file.releaseBefore(here.offset);
-    if (line.size() > max_line_length) continue;  // reported when executed
-    if (!mayHoldHead(line)) continue;
-    // Only the head of a line matters, except for IF (which may be a jump).
-    std::string_view head = line.substr(0, 96);
-    if (!normalizeLine(head, norm, nullptr)) continue;
-    LineHead h = scanLineHead(norm);
-    if (h.keyword == "IF" && line.size() > head.size()) {
-      if (!normalizeLine(line, norm, nullptr)) continue;
-      h = scanLineHead(norm);
+    TextPos here = scanned_;
+    if (!nextLine(text, scanned_, line)) break;
+    if ((scanned_.offset & 0xFFFFF) < line.size() + 1) file.releaseBefore(here.offset);
+    if (line.size() > max_line_length_) continue;  // reported when executed
+    if (!mayHoldHead(line)) continue;              // the usual line: no call
+    if (line.front() == '%' && here.offset > 0 && file.fed()) {
+      // A fed text archive: the program ends before its second header, as the archived
+      // program's range does when the whole text is loaded (docs/architecture.md "Streaming").
+      end_ = here.offset;
+      break;
     }
-    if (!h.label.empty()) {
-      auto it = labels_.find(h.label);
-      if (it == labels_.end())
-        it = labels_.emplace(std::string(h.label), std::vector<TextPos>{}).first;
-      it->second.push_back(here);
-    }
-    std::string_view kw = h.keyword;
-    if (kw.empty()) continue;
-    if (kw == "IF" && h.has_goto) continue;
-    // REPEAT with a label after it repeats a program section (PM-JP "Program section
-    // repetition"); only the bare REPEAT opens a REPEAT..UNTIL loop.
-    if (kw == "REPEAT" && h.has_arguments) continue;
-    if (kw == "IF" || kw == "WHILE" || kw == "FOR" || kw == "REPEAT" || kw == "LOOP") {
-      if (static_cast<int>(stack.size()) >= max_depth)
-        throw AlarmError(
-            AlarmNumber::ControlDepth,
-            fmt::format("nesting depth of control structures exceeded (limit {})", max_depth),
-            here.line);
-      stack.push_back({staticKeyword(kw), here, {}, false});
-      continue;
-    }
-    if (kw == "ELSE") {
-      if (stack.empty() || stack.back().keyword != "IF" || stack.back().has_else)
-        throw AlarmError(AlarmNumber::ControlNesting,
-                         "invalid nesting of control structures: ELSE without IF", here.line);
-      stack.back().has_else = true;
-      stack.back().else_pos = here;
-      continue;
-    }
-    if (kw == "ENDIF" || kw == "ENDWHILE" || kw == "ENDFOR" || kw == "UNTIL" || kw == "ENDLOOP") {
-      if (stack.empty() || closerOf(stack.back().keyword) != kw)
-        throw AlarmError(
-            AlarmNumber::ControlNesting,
-            fmt::format("invalid nesting of control structures: {} {}", kw,
-                        stack.empty() ? std::string("without opening statement")
-                                      : fmt::format("closes {} of line {}", stack.back().keyword,
-                                                    stack.back().pos.line)),
-            here.line);
-      Open o = stack.back();
-      stack.pop_back();
-      if (o.keyword == "IF") {
-        links_[o.pos.offset] = {o.has_else ? o.else_pos : here, here};
-        if (o.has_else) links_[o.else_pos.offset] = {here, here};
-      } else {
-        links_[o.pos.offset] = {here, here};
-      }
-      links_[here.offset] = {o.pos, o.pos};
-    }
+    scanLine(here, line, norm);
   }
   file.releaseAll();
-  if (!stack.empty()) {
-    const Open& o = stack.back();
+}
+
+void ProgramIndex::finish() const {
+  if (!stack_.empty()) {
+    const Open& o = stack_.back();
     throw AlarmError(AlarmNumber::ControlNesting,
                      fmt::format("invalid nesting of control structures: {} without {}", o.keyword,
                                  closerOf(o.keyword)),
                      o.pos.line);
+  }
+}
+
+void ProgramIndex::scanLine(TextPos here, std::string_view line, std::string& norm) {
+  std::vector<Open>& stack = stack_;
+  // Only the head of a line matters, except for IF (which may be a jump).
+  std::string_view head = line.substr(0, 96);
+  if (!normalizeLine(head, norm, nullptr)) return;
+  LineHead h = scanLineHead(norm);
+  if (h.keyword == "IF" && line.size() > head.size()) {
+    if (!normalizeLine(line, norm, nullptr)) return;
+    h = scanLineHead(norm);
+  }
+  if (!h.label.empty()) {
+    auto it = labels_.find(h.label);
+    if (it == labels_.end())
+      it = labels_.emplace(std::string(h.label), std::vector<TextPos>{}).first;
+    it->second.push_back(here);
+  }
+  std::string_view kw = h.keyword;
+  if (kw.empty()) return;
+  if (kw == "IF" && h.has_goto) return;
+  // REPEAT with a label after it repeats a program section (PM-JP "Program section
+  // repetition"); only the bare REPEAT opens a REPEAT..UNTIL loop.
+  if (kw == "REPEAT" && h.has_arguments) return;
+  if (kw == "IF" || kw == "WHILE" || kw == "FOR" || kw == "REPEAT" || kw == "LOOP") {
+    if (static_cast<int>(stack.size()) >= max_depth_)
+      throw AlarmError(
+          AlarmNumber::ControlDepth,
+          fmt::format("nesting depth of control structures exceeded (limit {})", max_depth_),
+          here.line);
+    stack.push_back({staticKeyword(kw), here, {}, false});
+    return;
+  }
+  if (kw == "ELSE") {
+    if (stack.empty() || stack.back().keyword != "IF" || stack.back().has_else)
+      throw AlarmError(AlarmNumber::ControlNesting,
+                       "invalid nesting of control structures: ELSE without IF", here.line);
+    stack.back().has_else = true;
+    stack.back().else_pos = here;
+    return;
+  }
+  if (kw == "ENDIF" || kw == "ENDWHILE" || kw == "ENDFOR" || kw == "UNTIL" || kw == "ENDLOOP") {
+    if (stack.empty() || closerOf(stack.back().keyword) != kw)
+      throw AlarmError(
+          AlarmNumber::ControlNesting,
+          fmt::format("invalid nesting of control structures: {} {}", kw,
+                      stack.empty() ? std::string("without opening statement")
+                                    : fmt::format("closes {} of line {}", stack.back().keyword,
+                                                  stack.back().pos.line)),
+          here.line);
+    Open o = stack.back();
+    stack.pop_back();
+    if (o.keyword == "IF") {
+      links_[o.pos.offset] = {o.has_else ? o.else_pos : here, here};
+      if (o.has_else) links_[o.else_pos.offset] = {here, here};
+    } else {
+      links_[o.pos.offset] = {here, here};
+    }
+    links_[here.offset] = {o.pos, o.pos};
   }
 }
 

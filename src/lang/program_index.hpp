@@ -29,8 +29,13 @@ class ProgramIndex {
   // Scans `file` from `begin` up to the line at offset `end` (one program of a text archive;
   // docs/language.md "Text archives"). Throws AlarmError with the offending line on invalid
   // nesting (12640) or nesting deeper than `max_depth` (12641).
+  // A growable file (a Stream) is indexed as far as it has text; extend() indexes what was
+  // appended since, finish() checks the nesting once the text is complete. A growing file is
+  // never an archive range: it is indexed whole (begin and end left at their defaults).
   ProgramIndex(const SourceFile& file, int max_depth, size_t max_line_length, TextPos begin = {},
                size_t end = static_cast<size_t>(-1));
+  void extend(const SourceFile& file);
+  void finish() const;
 
   const ControlLink* link(size_t line_offset) const {
     auto it = links_.find(line_offset);
@@ -50,6 +55,19 @@ class ProgramIndex {
   }
 
  private:
+  struct Open {
+    std::string_view keyword;  // IF, WHILE, FOR, REPEAT, LOOP
+    TextPos pos;
+    TextPos else_pos;
+    bool has_else = false;
+  };
+  void scanLine(TextPos here, std::string_view line, std::string& norm);
+
+  int max_depth_;
+  size_t max_line_length_;
+  TextPos scanned_;          // where the next extend() starts
+  size_t end_;               // offset of the line after the indexed range (archive program)
+  std::vector<Open> stack_;  // structures open at scanned_
   std::unordered_map<size_t, ControlLink> links_;
   std::unordered_map<std::string, std::vector<TextPos>, StringHash, std::equal_to<>> labels_;
 };

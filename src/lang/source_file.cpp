@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <new>
 
 namespace ncoffset::lang {
 
@@ -88,6 +89,29 @@ std::shared_ptr<SourceFile> SourceFile::fromString(std::string name, std::string
   return f;
 }
 
+std::shared_ptr<SourceFile> SourceFile::growable(std::string name, size_t capacity,
+                                                 std::function<bool()> more) {
+  std::shared_ptr<SourceFile> f(new SourceFile());
+  f->name_ = std::move(name);
+  f->path_ = f->name_;
+  // Reserved, not committed: pages are backed by memory as the text reaches them.
+  void* p = ::mmap(nullptr, capacity, PROT_READ | PROT_WRITE,
+                   MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  if (p == MAP_FAILED) throw std::bad_alloc();
+  f->grow_ = static_cast<char*>(p);
+  f->grow_capacity_ = capacity;
+  f->text_ = std::string_view(f->grow_, 0);
+  f->more_ = std::move(more);
+  return f;
+}
+
+bool SourceFile::append(std::string_view text) {
+  if (!grow_ || text.size() > grow_capacity_ - text_.size()) return false;
+  std::memcpy(grow_ + text_.size(), text.data(), text.size());
+  text_ = std::string_view(grow_, text_.size() + text.size());
+  return true;
+}
+
 void SourceFile::releaseBefore(size_t offset) const {
   if (!map_) return;
   const size_t page = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
@@ -104,6 +128,7 @@ void SourceFile::releaseAll() const {
 
 SourceFile::~SourceFile() {
   if (map_) ::munmap(map_, map_size_);
+  if (grow_) ::munmap(grow_, grow_capacity_);
 }
 
 }  // namespace ncoffset::lang

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -14,6 +15,12 @@ class SourceFile {
   // regular file (a FIFO, a device or a directory is refused without blocking on it).
   static std::shared_ptr<SourceFile> load(const std::filesystem::path& path, std::string* error);
   static std::shared_ptr<SourceFile> fromString(std::string name, std::string text);
+  // An empty text that grows by append() as a Stream is fed. Its characters never move (the
+  // address space for `capacity` characters is reserved up front), so views into it stay valid.
+  // `more` is called when the reader needs text that has not been appended yet: it returns once
+  // text was appended (true) or the text is complete (false).
+  static std::shared_ptr<SourceFile> growable(std::string name, size_t capacity,
+                                              std::function<bool()> more);
   ~SourceFile();
   SourceFile(const SourceFile&) = delete;
   SourceFile& operator=(const SourceFile&) = delete;
@@ -28,6 +35,16 @@ class SourceFile {
   // Drops all mapped pages and restarts the releaseBefore watermark (after a full scan).
   void releaseAll() const;
 
+  // Growable texts (Stream): more may follow. Appending beyond the capacity returns false.
+  bool growing() const { return more_ != nullptr; }
+  // Made by growable(): fed piece by piece, complete or not.
+  bool fed() const { return grow_ != nullptr; }
+  bool append(std::string_view text);
+  // Waits for more text (see growable()); false when the text is complete.
+  bool waitForMore() const { return more_ && more_(); }
+  // No more text follows.
+  void complete() { more_ = nullptr; }
+
  private:
   SourceFile() = default;
   std::string name_;
@@ -36,6 +53,9 @@ class SourceFile {
   void* map_ = nullptr;
   size_t map_size_ = 0;
   mutable size_t released_ = 0;
+  char* grow_ = nullptr;  // growable: the reserved characters
+  size_t grow_capacity_ = 0;
+  std::function<bool()> more_;
   std::string_view text_;
 };
 

@@ -60,6 +60,51 @@ void JsonLinesWriter::warning(const SourceLoc& where, int number, const std::str
   w_.lineDone();
 }
 
+void JsonLinesWriter::eventHead(const char* type, int line, int file) {
+  auto& b = w_.buf();
+  fmt::format_to(fmt::appender(b), "{{\"type\":\"{}\",\"line\":{},\"file\":", type, line);
+  appendJsonString(b, names_(file));
+}
+
+void JsonLinesWriter::tool(const ToolEvent& e) {
+  static constexpr const char* kWord[] = {"T", "D", "M6"};
+  eventHead("tool", e.line, e.file);
+  const int d = decimals_;
+  fmt::format_to(fmt::appender(w_.buf()),
+                 ",\"word\":\"{}\",\"tool\":{},\"edge\":{},\"radius\":{},\"length\":[{},{},{}],"
+                 "\"changed\":{}}}\n",
+                 kWord[static_cast<int>(e.word)], e.tool, e.edge, Number{e.radius + 0.0, d},
+                 Number{e.length.x + 0.0, d}, Number{e.length.y + 0.0, d},
+                 Number{e.length.z + 0.0, d}, e.changed ? "true" : "false");
+  w_.lineDone();
+}
+
+void JsonLinesWriter::mFunction(const MFunctionEvent& e) {
+  eventHead("m", e.line, e.file);
+  fmt::format_to(fmt::appender(w_.buf()), ",\"number\":{},\"spindle\":{}}}\n", e.number, e.spindle);
+  w_.lineDone();
+}
+
+void JsonLinesWriter::dwell(const DwellEvent& e) {
+  eventHead("dwell", e.line, e.file);
+  fmt::format_to(fmt::appender(w_.buf()), ",\"seconds\":{},\"revolutions\":{}}}\n",
+                 Number{e.seconds, decimals_}, Number{e.revolutions, decimals_});
+  w_.lineDone();
+}
+
+void JsonLinesWriter::spindle(const SpindleEvent& e) {
+  eventHead("spindle", e.line, e.file);
+  fmt::format_to(fmt::appender(w_.buf()), ",\"speed\":{},\"spindle\":{}}}\n",
+                 Number{e.speed, decimals_}, e.spindle);
+  w_.lineDone();
+}
+
+void JsonLinesWriter::feed(const FeedEvent& e) {
+  eventHead("feed", e.line, e.file);
+  fmt::format_to(fmt::appender(w_.buf()), ",\"feed\":{}}}\n", Number{e.feed, decimals_});
+  w_.lineDone();
+}
+
 void JsonLinesWriter::finish(const Alarm* alarm) {
   if (alarm) {
     auto& b = w_.buf();

@@ -70,9 +70,18 @@ class JsonLinesWriter final : public PathSink {
   void segment(const Segment& s) override;
   void message(const SourceLoc& where, const std::string& text) override;
   void warning(const SourceLoc& where, int number, const std::string& text) override;
+  // Events as records with a "type" field (docs/architecture.md "Events").
+  bool wantsEvents() const override { return true; }
+  void tool(const ToolEvent& e) override;
+  void mFunction(const MFunctionEvent& e) override;
+  void dwell(const DwellEvent& e) override;
+  void spindle(const SpindleEvent& e) override;
+  void feed(const FeedEvent& e) override;
   void finish(const Alarm* alarm) override;
 
  private:
+  // `{"type":"<type>","line":L,"file":"F"` of an event record.
+  void eventHead(const char* type, int line, int file);
   BufferedWriter w_;
   FileNames names_;
   int decimals_;

@@ -103,6 +103,7 @@ core::Feedback Placement::motion(const MotionBlock& m) {
   // Blocks that radius compensation made or moved (corner circles, approach and retraction
   // lines) carry its settings; programmed positions were checked by the interpreter.
   if (m.trc.mode != core::TrcMode::Off) checkRange(s, m.line);
+  seq_ = m.seq;
   sink_.segment(s);
   return {};
 }
@@ -110,6 +111,7 @@ core::Feedback Placement::motion(const MotionBlock& m) {
 void Placement::element(const MotionBlock& like, const Geometry& g) {
   const Segment s = toSegment(like, g);
   checkRange(s, like.line);
+  seq_ = like.seq;
   sink_.segment(s);
 }
 

@@ -29,6 +29,8 @@ class Placement final : public core::Stage {
     if (wants_programmed_) programmedSegment(m);
   }
   void warning(const core::MotionBlock& m, int number, const std::string& text) override;
+  // The interpreter's motion number (MotionBlock::seq) of the segment being written.
+  long long seq() const { return seq_; }
 
  private:
   void programmedSegment(const core::MotionBlock& m);
@@ -39,6 +41,7 @@ class Placement final : public core::Stage {
   PathSink& sink_;
   CoordSystem coords_;
   bool wants_programmed_ = false;
+  long long seq_ = 0;
   std::function<const std::string&(int)> file_name_;
 };
 

@@ -31,6 +31,8 @@ class SmoothApproach final : public core::Stage {
   // that defines its tangent.
   std::optional<Vec3> preprocessorStop(bool alarm) override;
   void flush() override;
+  // Nothing is held back (no approach waits for its contour).
+  bool idle() const { return state_ == State::Idle; }
 
  private:
   enum class State { Idle, WaitP4, WaitTangent };

@@ -43,6 +43,12 @@ class MessagePrinter final : public ncoffset::PathSink {
   }
   void programmed(const ncoffset::Segment& s) override { next_.programmed(s); }
   bool wantsProgrammed() const override { return next_.wantsProgrammed(); }
+  bool wantsEvents() const override { return next_.wantsEvents(); }
+  void tool(const ncoffset::ToolEvent& e) override { next_.tool(e); }
+  void mFunction(const ncoffset::MFunctionEvent& e) override { next_.mFunction(e); }
+  void dwell(const ncoffset::DwellEvent& e) override { next_.dwell(e); }
+  void spindle(const ncoffset::SpindleEvent& e) override { next_.spindle(e); }
+  void feed(const ncoffset::FeedEvent& e) override { next_.feed(e); }
   void finish(const ncoffset::Alarm* alarm) override { next_.finish(alarm); }
 
  private:
