@@ -68,6 +68,8 @@ def segments(rows):
     """(motion, start, end, centre, line) in (z, x); G0 rows only move the start."""
     result, at = [], None
     for r in rows:
+        if "type" in r or "motion" not in r:
+            continue  # event, message or warning records (docs/output-formats.md)
         end = (r["z"], r["x"])
         centre = (r["cz"], r["cx"]) if "cx" in r else None
         if r["motion"] != "G0" and at is not None:
