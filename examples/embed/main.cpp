@@ -1,12 +1,18 @@
 // Runs a part program through ncoffset::Channel and prints what a PathSink receives: one line
-// per segment (source line, motion, end point, arc centre, feed), MSG texts, warnings and the
-// alarm that stopped the run, then the final variables (with the active tool, $P_TOOLNO).
+// per segment (source line, motion, end point, arc centre, feed), the tool changes (T, D, M6 with
+// the edge's radius and length vector), MSG texts, warnings and the alarm that stopped the run,
+// then the final variables (with the active tool, $P_TOOLNO). The program is streamed: read in
+// chunks of 4 KiB and fed to an ncoffset::Stream, which writes only final segments, as a
+// simulation fed from a network or a control would use it.
 //
 //   embed_example [--init FILE]... PROGRAM
 //
 // Exit status: 0 ran to the end, 1 file error, 2 stopped by an alarm.
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <ncoffset/channel.hpp>
+#include <ncoffset/stream.hpp>
 #include <ncoffset/version.hpp>
 #include <string>
 #include <vector>
@@ -22,6 +28,13 @@ class PrintingSink final : public ncoffset::PathSink {
       std::cout << " centre " << s.centre.x << ' ' << s.centre.y << ' ' << s.centre.z;
     if (s.has_feed) std::cout << " F" << s.feed;
     std::cout << '\n';
+  }
+  bool wantsEvents() const override { return true; }
+  void tool(const ncoffset::ToolEvent& t) override {
+    static constexpr const char* kWord[] = {"T", "D", "M6"};
+    std::cout << "tool line " << t.line << ' ' << kWord[static_cast<int>(t.word)] << ": T" << t.tool
+              << " D" << t.edge << " radius " << t.radius << " length " << t.length.x << ' '
+              << t.length.y << ' ' << t.length.z << '\n';
   }
   void message(const ncoffset::SourceLoc& where, const std::string& text) override {
     std::cout << "message line " << where.line << ": " << text << '\n';
@@ -70,7 +83,17 @@ int main(int argc, char** argv) {
   PrintingSink sink;
   for (const auto& init : inits)
     if (int s = status(channel.runInit(init, sink))) return s;
-  int s = status(channel.runProgram(program, sink));
+  std::ifstream file(program, std::ios::binary);
+  if (!file) {
+    std::cerr << "cannot read " << program << '\n';
+    return 1;
+  }
+  const std::filesystem::path path(program);
+  ncoffset::Stream stream(channel, sink, path.filename().string(), path.parent_path());
+  char chunk[4096];
+  while (file.read(chunk, sizeof chunk) || file.gcount() > 0)
+    if (!stream.feed(std::string_view(chunk, static_cast<size_t>(file.gcount())))) break;
+  int s = status(stream.finish());
   if (s == 1) return s;
   channel.writeVariablesJson(std::cout);  // R parameters, user variables, $P_TOOLNO, ...
   std::cout << '\n';

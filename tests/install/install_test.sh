@@ -67,6 +67,7 @@ embed() {
   grep -qx 'ncoffset 0.1.0' "$tmp/embed.out" &&
     grep -qx 'segment line 7 G0 to 0 0 50' "$tmp/embed.out" &&
     grep -qx 'segment line 9 G0 to 10 10 105' "$tmp/embed.out" &&
+    grep -qx 'tool line 8 D: T1 D1 radius 4 length 0 0 100' "$tmp/embed.out" &&
     grep -q '^message line 11: G17: AXIND = (3, 2, 1), status 0' "$tmp/embed.out" &&
     grep -qE '"\$P_TOOLNO": ?1\b' "$tmp/embed.out" &&
     grep -qx end "$tmp/embed.out"
