@@ -133,6 +133,7 @@ class Parser {
   inline void nameAssignment(std::string_view name, int col);
   void indexedAssignment(std::string_view name, int col);
   void procedureCall(std::string_view name, int col);
+  void pushProcedureCall(std::string_view name, int first, int count, int col);
   inline bool literalWord(std::string_view name, int col);
   static inline Stmt wordStmt(std::string_view address, int col, bool equals);
   void addWord(std::string_view address, int ext, int value, int col, bool equals);

@@ -93,17 +93,7 @@ void Parser::indexedAssignment(std::string_view name, int col) {
   ++i_;
   auto [first, count] = argList(']');
   if (isAxisProcedure(name)) {
-    Node call;
-    call.kind = NodeKind::Call;
-    call.text = name;
-    call.a = first;
-    call.b = count;
-    Stmt st;
-    st.kind = StmtKind::ProcCall;
-    st.name = name;
-    st.expr = addNode(call);
-    st.column = col;
-    b_.stmts.push_back(st);
+    pushProcedureCall(name, first, count, col);
     return;
   }
   Node t;
@@ -128,6 +118,11 @@ void Parser::indexedAssignment(std::string_view name, int col) {
 void Parser::procedureCall(std::string_view name, int col) {
   ++i_;
   auto [first, count] = argList(')');
+  pushProcedureCall(name, first, count, col);
+}
+
+// The ProcCall statement of `name` with the arguments [first, first + count).
+void Parser::pushProcedureCall(std::string_view name, int first, int count, int col) {
   Node call;
   call.kind = NodeKind::Call;
   call.text = name;
