@@ -158,6 +158,7 @@ class Parser {
   // --- call_parser.cpp --------------------------------------------------------------------------
   void callStatement(Stmt& st);
   void procHeader(Stmt& st);
+  void programWithParameters(Stmt& st, bool formal);
   void parameterList(bool named);
   void formalParameter(bool named);
   int programName(bool path);

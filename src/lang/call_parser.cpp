@@ -24,15 +24,7 @@ void Parser::callStatement(Stmt& st) {
   }
   skipSpaces();
   if (kw == "EXTERN") {
-    if (!isAlpha(peek())) syntax("program name expected after EXTERN");
-    Node n;
-    n.kind = NodeKind::Name;
-    n.text = ident();
-    st.target = addNode(n);
-    skipSpaces();
-    const size_t before = b_.decls.size();
-    if (peek() == '(') parameterList(false);
-    st.ext = static_cast<int>(b_.decls.size() - before);
+    programWithParameters(st, false);
   } else if (kw == "MCALL") {
     if (i_ < s_.size() && isAlpha(peek())) st.target = programName(false);
   } else if (kw == "PCALL") {
@@ -49,18 +41,24 @@ void Parser::callStatement(Stmt& st) {
   b_.stmts.push_back(st);
 }
 
-// PROC <name>[(<parameters>)] [SAVE] [SBLOF] [DISPLOF] [ACTBLOCNO] [ICYCOF] [PREPRO]
-void Parser::procHeader(Stmt& st) {
+// `<name>[(<parameters>)]` after PROC (`formal`: named parameters) or EXTERN (types only): the
+// name in st.target, the parameters as declarations of the block, their count in st.ext.
+void Parser::programWithParameters(Stmt& st, bool formal) {
   skipSpaces();
-  if (!isAlpha(peek())) syntax("program name expected after PROC");
+  if (!isAlpha(peek())) syntax("program name expected after " + std::string(st.name));
   Node n;
   n.kind = NodeKind::Name;
   n.text = ident();
   st.target = addNode(n);
   skipSpaces();
   const size_t before = b_.decls.size();
-  if (peek() == '(') parameterList(true);
+  if (peek() == '(') parameterList(formal);
   st.ext = static_cast<int>(b_.decls.size() - before);
+}
+
+// PROC <name>[(<parameters>)] [SAVE] [SBLOF] [DISPLOF] [ACTBLOCNO] [ICYCOF] [PREPRO]
+void Parser::procHeader(Stmt& st) {
+  programWithParameters(st, true);
   int attributes = 0;
   while (true) {
     skipSpaces();
