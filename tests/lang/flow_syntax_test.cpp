@@ -6,6 +6,7 @@
 
 #include "lang/parser.hpp"
 #include "ncoffset/alarm.hpp"
+#include "parse_alarm.hpp"
 
 namespace ncoffset::lang {
 namespace {
@@ -14,16 +15,6 @@ Block parse(std::string_view text) {
   Block b;
   parseBlock(text, 1, b);
   return b;
-}
-
-int parseAlarm(std::string_view text) {
-  Block b;
-  try {
-    parseBlock(text, 1, b);
-  } catch (const AlarmError& e) {
-    return e.number();
-  }
-  return 0;
 }
 
 TEST(FlowSyntax, RepeatForms) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ncoffset/alarm.hpp"
+#include "parse_alarm.hpp"
 
 namespace ncoffset::lang {
 namespace {
@@ -15,17 +16,6 @@ Block parse(std::string_view text, const ParseLimits& limits = {}) {
   Block b;
   parseBlock(text, 7, b, limits);
   return b;
-}
-
-// The alarm number parseBlock raises for `text`, 0 if it parses.
-int parseAlarm(std::string_view text, const ParseLimits& limits = {}) {
-  Block b;
-  try {
-    parseBlock(text, 1, b, limits);
-  } catch (const AlarmError& e) {
-    return e.number();
-  }
-  return 0;
 }
 
 double num(const Block& b, int node) {

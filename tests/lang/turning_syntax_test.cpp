@@ -5,19 +5,10 @@
 
 #include "lang/parser.hpp"
 #include "ncoffset/alarm.hpp"
+#include "parse_alarm.hpp"
 
 namespace ncoffset::lang {
 namespace {
-
-int parseAlarm(std::string_view text) {
-  Block b;
-  try {
-    parseBlock(text, 1, b, {});
-  } catch (const AlarmError& e) {
-    return e.number();
-  }
-  return 0;
-}
 
 TEST(TurningSyntax, AxisProceduresAreCallsWithTheAxisInBrackets) {
   for (const char* name : {"DIAMONA", "DIAM90A", "DIAMOFA", "DIACYCOFA", "DIAMCHANA"}) {
