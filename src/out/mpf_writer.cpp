@@ -130,12 +130,12 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
     }
     if (s.turns > 0) fmt::format_to(fmt::appender(b), " TURN={}", s.turns);
   }
-  if (motion != Motion::G0) feed(s);
+  if (motion != Motion::G0) feedWord(s);
   source(s);
   w_.lineDone();
 }
 
-void MpfWriter::feed(const Segment& s) {
+void MpfWriter::feedWord(const Segment& s) {
   if (!s.has_feed || (has_feed_ && s.feed == feed_)) return;
   append(w_.buf(), " F");
   appendNcNumber(w_.buf(), s.feed, decimals_);

@@ -30,7 +30,7 @@ class MpfWriter final : public PathSink {
 
  private:
   void block(const Segment& s, Motion motion, Vec3 end);
-  void feed(const Segment& s);
+  void feedWord(const Segment& s);  // the F word, when it changed
   void feedUnit(FeedUnit u);
   void source(const Segment& s);
 
