@@ -84,6 +84,7 @@ enum class AlarmNumber : int {
   TooManyVariables = 99004,  // more than --max-variables user variables (or tool edges)
   ArrayTooLarge = 99005,     // array larger than the limits, or out of memory
   NoMotionLimit = 99006,     // more than --max-blocks-without-motion blocks without a motion
+  EndlessLoop = 99007,       // a loop that passes twice through the same state: never ends
   NotModelled = 99010,       // a construct the control knows and ncoffset does not model
   BadCharacter = 99011,      // a byte not allowed outside comments and strings
   FrameNotAffine = 99012,    // a circle a non-uniform scale would make an ellipse

@@ -71,6 +71,7 @@ bool Interpreter::loopStatement(const Stmt& st, bool& jumped) {
   if (kw == "ENDWHILE") {
     lvl.pos = link().partner;  // back to the WHILE: its condition is evaluated again
     jumped = true;
+    backEdge(line_pos_.offset);
     return true;
   }
   if (kw == "FOR") {
@@ -105,12 +106,14 @@ bool Interpreter::loopStatement(const Stmt& st, bool& jumped) {
     if (!lang::toBool(eval_.eval(b, st.expr))) {
       flow_.continueAfter(l.partner);
       jumped = true;
+      backEdge(line_pos_.offset);
     }
     return true;
   }
   if (kw == "ENDLOOP") {
     flow_.continueAfter(link().partner);
     jumped = true;
+    backEdge(line_pos_.offset);
     return true;
   }
   return false;
@@ -123,6 +126,7 @@ void Interpreter::caseStatement(const Stmt& st, size_t index, bool& jumped) {
     const Stmt& arm = b.stmts[k];
     if (arm.kind != StmtKind::CaseArm) break;
     bool hit = arm.expr < 0;
+    loop_.expression(b, arm.expr);
     if (!hit) {
       Value v = eval_.eval(b, arm.expr);
       hit = (v.isText() || sel.isText()) ? lang::toText(v) == lang::toText(sel)
@@ -164,7 +168,7 @@ void Interpreter::jumpTo(lang::JumpKind kind, int target_node, bool quiet) {
       block_no = std::stoll(v.str.substr(1));
   }
   if (block_no >= 0) {
-    if (flow_.jumpToBlockNumber(block_no, here, search)) return;
+    if (flow_.jumpToBlockNumber(block_no, here, search)) return backEdge(here);
     label = fmt::format("N{}", block_no);
   } else {
     if (target.kind == NodeKind::Name) {
@@ -176,7 +180,7 @@ void Interpreter::jumpTo(lang::JumpKind kind, int target_node, bool quiet) {
       label = lang::toText(eval_.eval(block_, target_node));
     }
     for (auto& c : label) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (flow_.jumpToLabel(label, here, search)) return;
+    if (flow_.jumpToLabel(label, here, search)) return backEdge(here);
   }
   if (quiet) return;  // GOTOC: continue with the next block
   raise(AlarmNumber::JumpNotFound, fmt::format("jump destination {} not found ({} search)", label,

@@ -91,6 +91,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   vars_.beginRun();
   resetCalls();
   without_motion_ = 0;  // an init file's data blocks do not count against the program
+  loop_.reset();
   std::string_view text;
   const size_t max_len = options_.limits.max_line_length;
   while (!ended_) {
@@ -168,15 +169,20 @@ void Interpreter::executeBlock() {
       lvl.defs_allowed = false;
     switch (st.kind) {
       case StmtKind::Word:
+        if (!st.literal) [[unlikely]]
+          loop_.expression(b, st.expr);
         collectWord(st);
         break;
       case StmtKind::Assign:
+        loop_.dirty();
         assign(st);
         break;
       case StmtKind::Call:
+        loop_.dirty();
         namedWord(st);
         break;
       case StmtKind::ProcCall: {
+        watchProcCall(st);
         if (isSubprogramName(st.name)) {  // NAME(args), L123(args): a subprogram call
           collectCall(st.name, st.expr);
           break;
@@ -187,11 +193,12 @@ void Interpreter::executeBlock() {
         break;
       }
       case StmtKind::Keyword:
+        watchKeyword(st);
         executeControl(st, i, jumped);
         if (st.name == "CASE") i = b.stmts.size();
         break;
       case StmtKind::CaseArm:
-        break;
+        break;  // read by caseStatement
     }
   }
   if (!jumped) finishBlock();

@@ -13,6 +13,7 @@
 
 #include "core/stage.hpp"
 #include "interp/frame_state.hpp"
+#include "interp/loop_watch.hpp"
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
 #include "interp/motion_builder.hpp"
@@ -79,6 +80,11 @@ class Interpreter final : public lang::Environment {
   void caseStatement(const lang::Stmt& st, size_t index, bool& jumped);
   void jump(const lang::Stmt& st, bool quiet);
   void jumpTo(lang::JumpKind kind, int target_node, bool quiet);
+  // The endless-loop proof (loop_guard.cpp): statements that may change the next pass, and a
+  // jump that went back from the line at offset `from` (alarm 99007 on the second clean pass).
+  void watchKeyword(const lang::Stmt& st);
+  void watchProcCall(const lang::Stmt& st);
+  void backEdge(size_t from);
   void callSubprogram(std::string_view name, long long repeat);
   // Finds a subprogram file beside the main program (nullptr if there is none).
   bool programExists(std::string_view name);
@@ -227,6 +233,7 @@ class Interpreter final : public lang::Environment {
   int file_ = 0;
   long long executed_ = 0;
   long long without_motion_ = 0;  // blocks executed since the last motion
+  LoopWatch loop_;                // ends a loop that provably never ends (99007)
   size_t for_continue_ = static_cast<size_t>(-1);
   bool ended_ = false;
   bool init_file_ = false;

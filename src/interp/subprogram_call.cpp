@@ -289,6 +289,7 @@ void Interpreter::restoreSaved(const CallFrame& f) {
 // MCALL (PM-JP "Modal subprogram call"): after every block that moves a geometry axis, outside
 // the modally called subprogram itself (its blocks and what it calls do not call it again).
 void Interpreter::modalCallAfter() {
+  loop_.dirty();
   // The block moved the path as finishBlock decides it: axis words that are targets (not of a
   // frame statement, G58/G59 or G25/G26), circle words with G2/G3, or a SAR block.
   const bool axes_consumed = !words_.frame_command.empty() || words_.axial_offset == 58 ||

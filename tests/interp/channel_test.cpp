@@ -152,7 +152,7 @@ TEST(Channel, StructureAlarmFromThePreScan) {
 TEST(Channel, BlockLimit) {
   RunOptions o;
   o.limits.max_blocks = 50;
-  Outcome r = run("LBL: G1 X1 F100\nG1 X2\nGOTOB LBL\n", o);
+  Outcome r = run("LBL: G1 X1 F100\nR1=R1+1\nG1 X2\nGOTOB LBL\n", o);
   ASSERT_TRUE(r.result.alarm);
   EXPECT_EQ(r.result.alarm->number, 99002);
 }
