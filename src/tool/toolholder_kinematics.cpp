@@ -49,9 +49,10 @@ AngleSolutions oneAxis(Vec3 u, Vec3 s, Vec3 t, double preset, int slot, double o
 }
 
 // `alpha` plus the multiple of 360 degrees nearest to `preset` (W1: "the solution closest to
-// the specified angles"; 750 specified, 10 computed: 730).
+// the specified angles"; 750 specified, 10 computed: 730). Half a turn away (180 from 0) goes
+// up: +180, whichever of +-180 the solution came as.
 double nearTurn(double alpha, double preset) {
-  return alpha + 360.0 * std::round((preset - alpha) / 360.0);
+  return alpha + 360.0 * std::floor((preset - alpha) / 360.0 + 0.5);
 }
 
 }  // namespace

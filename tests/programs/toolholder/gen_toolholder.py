@@ -49,7 +49,7 @@ def search(f, preset):
             if np.linalg.norm(f(*x)) < 1e-9 and not any(np.allclose(x, y, atol=1e-6) for y in found):
                 found.append(x)
     # whole turns towards the preset (W1: 750 specified, 10 computed -> 730), then the closest
-    found = [x + 360.0 * np.round((np.asarray(preset) - x) / 360.0) for x in found]
+    found = [x + 360.0 * np.floor((np.asarray(preset) - x) / 360.0 + 0.5) for x in found]
     found.sort(key=lambda x: abs(x[0] - preset[0]) + abs(x[1] - preset[1]))
     return found
 
@@ -145,7 +145,27 @@ def lentoax():
         print(f"  L{k}", np.round(R @ e, 12))
 
 
+def more_tcofr():
+    print("t_cardan_tcofry (cardan C/A, no frame, TCOFRY, L1 = 100)")
+    g = lambda a1, a2: rot([0, 0, 1], a1) @ rot([1, 0, 0], a2) @ [0, 0, 1] - [0, 1, 0]
+    s = search(g, [0, 0])
+    print("  solutions", [list(np.round(x, 9)) for x in s])
+    row("X0 Y0 Z0", rot([0, 0, 1], s[0][0]) @ rot([1, 0, 0], s[0][1]) @ [0, 0, 100.])
+    print("t_cardan_limits (ROT X30, A limited to -90..-1, then A on a 25 degree Hirth grid)")
+    f = rpy(rx=30) @ [0, 0, 1]
+    g = lambda a1, a2: rot([0, 0, 1], a1) @ rot([1, 0, 0], a2) @ [0, 0, 1] - f
+    s = search(g, [0, 0])
+    print("  within limits", [list(np.round(x, 9)) for x in s if -90 <= x[1] <= -1])
+    print("  Hirth 25: A", [25 * np.round(x[1] / 25) for x in s][0])
+    print("t_torot_variants (no holder): BCS of X1 Y2 Z3")
+    for name, cols in (("TOROT G17", "XYZ"), ("TOROTY G17", "YZX"), ("TOROTX G17", "ZXY"),
+                       ("TOFRAME G18", "ZXY"), ("TOFRAMEZ G19", "YZX")):
+        e = {"X": np.array([1., 0, 0]), "Y": np.array([0, 1., 0]), "Z": np.array([0, 0, 1.])}
+        row(name, 1 * e[cols[0]] + 2 * e[cols[1]] + 3 * e[cols[2]])
+
+
 if __name__ == "__main__":
+    more_tcofr()
     head45()
     cardan_tcofr()
     table_p()
