@@ -48,35 +48,38 @@ enum class AlarmNumber : int {
   TrcBlockOmitted = 10763,          // warning: a block omitted by bottleneck detection
   TrcPreprocessorStop = 10778,      // STOPRE while compensation is active, SD42480 = 1
   // --- the channel ---
-  FeedNotProgrammed = 10860,  // G1/G2/G3 without a feedrate
-  AddressTwice = 12010,       // an address twice in one block
-  SyntaxError = 12080,        // syntax error (text and column given)
-  NotImplemented = 12140,     // a function the control does not have in this configuration
-  TypeMismatch = 12150,       // operation not compatible with the data type
-  ValueRange = 12160,         // value out of range
-  AlreadyDefined = 12170,     // a name defined twice
-  ParamNotVariable = 12320,   // an expression given for a call-by-reference (VAR) parameter
-  ParamType = 12330,          // type (or array dimension) of a parameter incorrect
-  TooManyParams = 12340,      // more arguments than the subprogram has parameters
-  UnknownGCode = 12470,       // unknown G function
-  NameNotDefined = 12550,     // name not defined or option not available
-  ControlNesting = 12640,     // invalid nesting of control structures
-  ControlDepth = 12641,       // control structures nested too deep
-  DefaultParam = 14010,       // a VAR or AXIS parameter left out in a call
-  ProgramNotFound = 14011,    // program not existing
-  SubprogramDepth = 14012,    // maximum subprogram level exceeded
-  WrongCallParams = 14020,    // wrong number or type of parameters in a call
-  CircleEndPoint = 14040,     // end point not on the circle
-  CircleProgramming = 14045,  // circle not defined
-  CircleTurns = 14048,        // TURN= outside 0..999
-  Arithmetic = 14051,         // arithmetic error (division by zero, SQRT(-1), overflow)
-  JumpNotFound = 14080,       // jump destination not found
-  IllegalDef = 14500,         // DEF after the first statement
-  NoTransverseAxis = 16510,   // diameter programming without a transverse axis (MD20100)
-  ArrayIndex1 = 17020,        // array index 1 out of range
-  ArrayIndex2 = 17030,        // array index 2 out of range
-  EdgeNotExisting = 17181,    // T no., D no. not existing
-  ToolNotExisting = 17191,    // T not existing
+  FeedNotProgrammed = 10860,   // G1/G2/G3 without a feedrate
+  AddressTwice = 12010,        // an address twice in one block
+  SyntaxError = 12080,         // syntax error (text and column given)
+  NotImplemented = 12140,      // a function the control does not have in this configuration
+  TypeMismatch = 12150,        // operation not compatible with the data type
+  ValueRange = 12160,          // value out of range
+  AlreadyDefined = 12170,      // a name defined twice
+  ParamNotVariable = 12320,    // an expression given for a call-by-reference (VAR) parameter
+  ParamType = 12330,           // type (or array dimension) of a parameter incorrect
+  TooManyParams = 12340,       // more arguments than the subprogram has parameters
+  UnknownGCode = 12470,        // unknown G function
+  NameNotDefined = 12550,      // name not defined or option not available
+  ControlNesting = 12640,      // invalid nesting of control structures
+  ControlDepth = 12641,        // control structures nested too deep
+  DefaultParam = 14010,        // a VAR or AXIS parameter left out in a call
+  ProgramNotFound = 14011,     // program not existing
+  SubprogramDepth = 14012,     // maximum subprogram level exceeded
+  WrongCallParams = 14020,     // wrong number or type of parameters in a call
+  CircleEndPoint = 14040,      // end point not on the circle
+  CircleProgramming = 14045,   // circle not defined
+  CircleTurns = 14048,         // TURN= outside 0..999
+  Arithmetic = 14051,          // arithmetic error (division by zero, SQRT(-1), overflow)
+  JumpNotFound = 14080,        // jump destination not found
+  CarrierNumber = 14150,       // toolholder number (TCARR) programmed incorrectly or MD error
+  CarrierOrientation = 14152,  // toolholder: invalid orientation (TCOFR cannot reach it)
+  CarrierKind = 14153,         // toolholder: unknown kinematic type ($TC_CARR23)
+  IllegalDef = 14500,          // DEF after the first statement
+  NoTransverseAxis = 16510,    // diameter programming without a transverse axis (MD20100)
+  ArrayIndex1 = 17020,         // array index 1 out of range
+  ArrayIndex2 = 17030,         // array index 2 out of range
+  EdgeNotExisting = 17181,     // T no., D no. not existing
+  ToolNotExisting = 17191,     // T not existing
   // --- ncoffset's own: limits (docs/limits.md) and what it does not model ---
   LineTooLong = 99001,       // block longer than --max-line-length
   BlockLimit = 99002,        // more than --max-blocks executed blocks

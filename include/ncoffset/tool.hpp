@@ -83,7 +83,8 @@ std::array<double, 2> tipFromEdgeCentre(int sl, double r);
 Vec3 tipVector(const EdgeData& e, const ToolSettings& s, Plane plane, double r);
 
 // LENTOAX (W1 2.11, details §1): _AXIND and _MATRIX for the active edge in the coordinate
-// system `coord` (M/B/W/K/T). `frame_linear` is the linear part of WCS -> BCS.
+// system `coord` (M/B/W/K/T). `frame_linear` is the linear part of WCS -> BCS, `carrier` the
+// rotation of an active toolholder with orientation capability (W1 2.5; not in the TCS).
 struct LentoaxResult {
   int status = 0;              // 0 parallel, 1 use _MATRIX, -1 bad _COORD, -2 no tool
   std::array<int, 3> axind{};  // abscissa, ordinate, applicate
@@ -91,6 +92,6 @@ struct LentoaxResult {
 };
 LentoaxResult lentoax(const EdgeData& e, const ToolSettings& s, Plane plane,
                       const std::array<bool, 3>& mirrored, const Mat3& frame_linear,
-                      const std::string& coord);
+                      const std::string& coord, const Mat3& carrier = Mat3{});
 
 }  // namespace ncoffset

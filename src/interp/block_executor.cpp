@@ -48,6 +48,7 @@ void Interpreter::finishBlock() {
   }
   if (frames_changed) frames_.update();
   executeToolWords();
+  if (carrier_.pending) executeCarrierWords();  // TCARR, TCOFR, PAROT, TOROT ... (rare)
   if (words_.rpl && words_.frame_command.empty())
     raise(AlarmNumber::SyntaxError, "RPL= only with ROT or AROT");
 

@@ -241,6 +241,10 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     return;
   }
   if (turningWord(st)) return;
+  if (name == "TCARR") {  // orientable toolholder (toolholder_words.cpp)
+    toolholderNumber(value());
+    return;
+  }
   // The other extended addresses: (b) accepted, (c) alarm 99010 (docs/names.md).
   if (predefinedAssign(name, Value::real(value()))) return;
   notModelled(fmt::format("address {}=", name),

@@ -29,9 +29,17 @@ class FrameState {
   // G500 (n = 0), G54..G57 (1..4), G505..G599 (5..99): $P_IFRAME becomes a copy of $P_UIFR[n].
   void select(size_t n) { iframe_ = uifr_[n]; }
 
-  // The active frame: $P_IFRAME : $P_PFRAME, recomputed after a change.
+  // The system frames of an orientable toolholder (W1 2.5, docs/toolholders.md): the table
+  // offset $P_PARTFR (outside $P_IFRAME) and the rotations of TOROT/TOFRAME ($P_TOOLFR) and PAROT
+  // ($P_WPFRAME) between $P_IFRAME and $P_PFRAME. Call update() after a change.
+  Frame& partFrame() { return partfr_; }
+  Frame& toolFrame() { return toolfr_; }
+  Frame& workpieceFrame() { return wpfr_; }
+
+  // The active frame: [$P_PARTFR :] $P_IFRAME [: $P_TOOLFR : $P_WPFRAME] : $P_PFRAME, recomputed
+  // after a change.
   void update();
-  Frame active() const { return chain(iframe_, pframe_); }
+  Frame active() const;
   const Affine& map() const { return act_; }
   const Affine& inverse() const { return act_inverse_; }
   bool isIdentity() const { return act_identity_; }
@@ -44,6 +52,7 @@ class FrameState {
   std::vector<Frame> uifr_;
   Frame iframe_;
   Frame pframe_;
+  Frame partfr_, toolfr_, wpfr_;
   Affine act_;
   Affine act_inverse_;
   bool act_identity_ = true;     // act_ is exactly the identity: the products are skipped

@@ -327,8 +327,9 @@ void Interpreter::namedWord(const Stmt& st) {
                   "TRACYL", "TRAANG", "ROTS", "AROTS", "CROTS", "MOVT", "INVCW", "INVCCW",
                   "OEMIPO1", "OEMIPO2", "EXTCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
-  if (predefinedWord(w)) return;  // docs/names.md: (a)/(b) accepted, (c) alarm 99010
-  if (!words_.call.empty())       // every word is read: a second call would drop the first name
+  if (toolholderNamedWord(w)) return;  // TCOABS, TCOFR.., PAROT, TOROT, TOFRAME..
+  if (predefinedWord(w)) return;       // docs/names.md: (a)/(b) accepted, (c) alarm 99010
+  if (!words_.call.empty())  // every word is read: a second call would drop the first name
     raise(AlarmNumber::NameNotDefined,
           fmt::format("name {} not defined (a block calls one subprogram; {} follows)", words_.call,
                       w));

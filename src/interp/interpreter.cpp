@@ -44,6 +44,8 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
   sd_wear_sign_ = data_.find("$SC_WEAR_SIGN");
   sd_length_const_ = data_.find("$SC_TOOL_LENGTH_CONST");
   sd_length_type_ = data_.find("$SC_TOOL_LENGTH_TYPE");
+  md_carriers_ = data_.find("$MN_MM_NUM_TOOL_CARRIER");
+  sd_carrier_fine_ = data_.find("$SC_TOCARR_FINE_CORRECTION");
 }
 
 Interpreter::~Interpreter() = default;
@@ -314,8 +316,11 @@ bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool i
   }
   if (name[0] == '$' && readCallVariable(name, idx, out)) return true;  // $P_SUBPAR
   if (readSystem(name, idx, indexed, out)) return true;
-  if (!indexed && name.size() == 1 && (name[0] == 'X' || name[0] == 'Y' || name[0] == 'Z')) {
-    out = {lang::Type::Axis, 0, std::string(name), {}};  // a geometry axis name as an AXIS value
+  if (!indexed && name.size() == 1 &&
+      (name[0] == 'X' || name[0] == 'Y' || name[0] == 'Z' || name[0] == 'A' || name[0] == 'B' ||
+       name[0] == 'C')) {
+    // An axis name as an AXIS value (the rotary axes A, B, C for $TC_CARR21/22 = B).
+    out = {lang::Type::Axis, 0, std::string(name), {}};
     return true;
   }
   return false;

@@ -19,6 +19,7 @@
 #include "interp/motion_builder.hpp"
 #include "interp/program_flow.hpp"
 #include "interp/subprogram_call.hpp"
+#include "interp/toolholder_words.hpp"
 #include "interp/variable_store.hpp"
 #include "interp/variables.hpp"
 #include "lang/block.hpp"
@@ -166,6 +167,15 @@ class Interpreter final : public lang::Environment {
 
   // --- tool data and selection (tool_selection.cpp) ---
   void executeToolWords();
+  // The orientable toolholder (toolholder_words.cpp, docs/toolholders.md).
+  void toolholderNumber(double m);  // TCARR=m
+  bool toolholderNamedWord(std::string_view w);
+  void executeCarrierWords();
+  Mat3 toolFrameRotation(ToolFrame variant) const;
+  bool readCarrier(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                   lang::Value& out);
+  bool writeCarrier(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                    const lang::Value& v);
   lang::Value callLentoax(std::span<const lang::Value> args);
 
   // --- system variables and frame functions (system_variables.cpp) ---
@@ -255,7 +265,10 @@ class Interpreter final : public lang::Environment {
   // Tool offsets (W1): the offset memory, the active tool and edge, and what the selection
   // snapshotted (data, setting data and mirroring act from the next edge selection).
   tool::ToolSelection tools_;
-  MotionBuilder motion_;  // after first_, data_, frames_, tools_
+  tool::ToolCarriers carriers_{0};
+  CarrierState carrier_;
+  int md_carriers_ = 0, sd_carrier_fine_ = 0;  // MD18088, SD42974
+  MotionBuilder motion_;                       // after first_, data_, frames_, tools_
   int md_change_mode_ = 0, md_change_m_ = 0, md_default_edge_ = 0;
   int sd_mirror_length_ = 0, sd_mirror_wear_ = 0, sd_cutpos_ = 0, sd_wear_sign_ = 0,
       sd_length_const_ = 0, sd_length_type_ = 0;

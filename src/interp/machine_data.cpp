@@ -22,6 +22,8 @@ constexpr DataSpec kTable[] = {
     {10600, "FRAME_ANGLE_INPUT_MODE", C::NckMd, 1, true, 1, 1, true,
      "1 = RPY angles (2 = Euler is not modelled)"},
     {10610, "MIRROR_REF_AX", C::NckMd, 0, true, 0, 0, true, "0 = mirror about the programmed axis"},
+    {18088, "MM_NUM_TOOL_CARRIER", C::NckMd, 10, true, 0, 1000, false,
+     "toolholders with orientation capability $TC_CARR (a control's default is 0)"},
     {18102, "MM_TYPE_OF_CUTTING_EDGE", C::NckMd, 0, true, 0, 0, true,
      "flat D numbers not modelled"},
     {18112, "MM_KIND_OF_SUMCORR", C::NckMd, 0, true, 0, kBig, false, "sum/setup offsets"},
@@ -97,6 +99,8 @@ constexpr DataSpec kTable[] = {
      "length assignment by tool class"},
     {42960, "TOOL_TEMP_COMP", C::ChannelSd, 0, false, 0, 0, true,
      "temperature compensation not modelled"},
+    {42974, "TOCARR_FINE_CORRECTION", C::ChannelSd, 0, true, 0, 1, false,
+     "1: the toolholder's fine offsets $TC_CARR41..65 count"},
 };
 
 }  // namespace

@@ -95,6 +95,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   }
   if (name.empty() || name[0] != '$') return false;
   if (tools_.read(name, idx, indexed, modal_.plane, out)) return true;
+  if (readCarrier(name, idx, indexed, out)) return true;
   if (readState(name, idx, indexed, out)) return true;
   if (name == "$P_APR" || name == "$P_AEP") {
     // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
@@ -165,6 +166,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     return;
   }
   if (tools_.write(name, idx, indexed, v)) return;
+  if (writeCarrier(name, idx, indexed, v)) return;
   if (double* counter = partCounter(name)) {  // the workpiece counters (state_variables.cpp)
     if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
     *counter = lang::toNumber(v, "workpiece count");

@@ -113,16 +113,17 @@ Vec3 tipVector(const EdgeData& e, const ToolSettings& s, Plane plane, double r) 
 
 LentoaxResult lentoax(const EdgeData& e, const ToolSettings& s, Plane plane,
                       const std::array<bool, 3>& mirrored, const Mat3& frame_linear,
-                      const std::string& coord_in) {
+                      const std::string& coord_in, const Mat3& carrier) {
   LentoaxResult r;
   std::string coord;
   for (char ch : coord_in)
     coord.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(ch))));
   bool wcs;
+  const bool tcs = coord == "TCS" || coord == "T";
   if (coord == "WCS" || coord == "W")
     wcs = true;
   else if (coord == "MCS" || coord == "M" || coord == "BCS" || coord == "B" || coord == "KCS" ||
-           coord == "K" || coord == "TCS" || coord == "T")
+           coord == "K" || tcs)
     wcs = false;
   else {
     r.status = -1;
@@ -136,6 +137,7 @@ LentoaxResult lentoax(const EdgeData& e, const ToolSettings& s, Plane plane,
     double sign = a.sign[k];
     if (mirrored[static_cast<size_t>(axis)] && s.mirror_length) sign = -sign;
     dir[k][axis] = sign;
+    if (!tcs) dir[k] = carrier * dir[k];  // the toolholder turns the tool (docs/toolholders.md)
     if (wcs) {
       // Into the WCS: the inverse of the frame's linear part, normalised (scale drops out).
       Vec3 w = frame_linear.inverse() * dir[k];

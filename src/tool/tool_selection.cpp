@@ -75,6 +75,17 @@ void ToolSelection::cache(Plane plane) const {
   edge_.cached_tip = ncoffset::tipVector(edge_.data, edge_.settings, plane, edge_.radius);
   edge_.cached_plane = plane;
   edge_.offset_cached = true;
+  if (carrier_) {
+    edge_.cached_offset = carrier_rotation_ * edge_.cached_offset + carrier_offset_;
+    edge_.cached_tip = carrier_rotation_ * edge_.cached_tip;
+  }
+}
+
+void ToolSelection::setCarrier(const Mat3& rotation, Vec3 offset, bool active) {
+  carrier_ = active;
+  carrier_rotation_ = active ? rotation : Mat3::identity();
+  carrier_offset_ = active ? offset : Vec3{};
+  edge_.offset_cached = false;
 }
 
 Vec3 ToolSelection::tipVector(Plane plane) const {
@@ -88,10 +99,12 @@ EffectiveLengths ToolSelection::lengths() const {
 }
 
 Vec3 ToolSelection::orientation(Plane plane) const {
-  if (edge_.valid) return toolOrientation(edge_.data, edge_.settings, plane, edge_.mirrored);
   Vec3 o;
-  o[planeAxes(plane).applicate] = 1;
-  return o;
+  if (edge_.valid)
+    o = toolOrientation(edge_.data, edge_.settings, plane, edge_.mirrored);
+  else
+    o[planeAxes(plane).applicate] = 1;
+  return carrier_ ? carrier_rotation_ * o : o;
 }
 
 }  // namespace ncoffset::tool

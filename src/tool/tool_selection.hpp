@@ -66,6 +66,12 @@ class ToolSelection {
   // $P_TOOLO: the unit orientation (without an edge the plane's applicate).
   Vec3 orientation(Plane plane) const;
 
+  // The active toolholder's action on the tool (W1 2.5, docs/toolholders.md): the length vector
+  // becomes rotation * L + offset, the orientation rotation * o. Set at TCARR and at a change of
+  // G group 42; the cached vectors are recomputed once, not per block.
+  void setCarrier(const Mat3& rotation, Vec3 offset, bool active);
+  const Mat3& carrierRotation() const { return carrier_rotation_; }
+
   // $P_TOOLNO, $P_TOOL, $P_TOOLP, $P_TOOLR, $P_TOOLL[k], $P_TOOLO[k] and the $TC_.. data. False
   // for a name that is no tool variable.
   bool read(std::string_view name, std::span<const lang::Value> idx, bool indexed, Plane plane,
@@ -93,6 +99,9 @@ class ToolSelection {
   int active_tool_ = 0;
   int active_edge_ = 0;
   int preselected_tool_ = -1;
+  bool carrier_ = false;  // a toolholder is active (TCARR=m, m > 0)
+  Mat3 carrier_rotation_;
+  Vec3 carrier_offset_;
   struct EdgeSnapshot {
     bool valid = false;
     EdgeData data;

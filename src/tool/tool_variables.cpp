@@ -214,7 +214,8 @@ Value ToolSelection::callLentoax(std::span<const Value> args, const ArrayLookup&
                upper == "B" || upper == "KCS" || upper == "K" || upper == "TCS" || upper == "T";
   if (!known) return Value::integer(-1);
   if (!edge_.valid) return Value::integer(-2);
-  LentoaxResult r = lentoax(edge_.data, edge_.settings, plane, edge_.mirrored, frame_linear, coord);
+  LentoaxResult r = lentoax(edge_.data, edge_.settings, plane, edge_.mirrored, frame_linear, coord,
+                            carrier_rotation_);
   for (size_t i = 0; i < 3; ++i) {
     axind[i] = Value::integer(r.axind[i]);
     for (size_t k = 0; k < 3; ++k) matrix[i * 3 + k] = Value::real(r.matrix[i][k]);
