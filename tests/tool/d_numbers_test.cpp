@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ncoffset/alarm.hpp"
+#include "support/alarm_of.hpp"
 #include "tool/tool_selection.hpp"
 
 namespace ncoffset::tool {
@@ -22,14 +23,7 @@ double get(const ToolSelection& s, const std::string& name, std::vector<Value> i
   return out.num;
 }
 
-int alarmOf(auto&& f) {
-  try {
-    f();
-  } catch (const AlarmError& e) {
-    return e.number();
-  }
-  return 0;
-}
+using test::alarmOf;
 
 // Free D numbers: MD18105 = 100 > MD18106 = 3; T5 D51, D52; T7 D71.
 ToolSelection freeNumbers() {
