@@ -55,6 +55,7 @@ int ToolSelection::cuttingEdgeNumber(int t, int d) const {
   if (!dconf_.freeNumbers()) return d;  // W1: with MD18105 <= MD18106 a read returns CE = D
   if (const Tool* tool = tools_.tool(t)) {
     auto it = tool->ce.find(d);
+    if (it == tool->ce.end()) it = tool->ce.find(d + kInvalidD);  // the active one after DZERO
     if (it != tool->ce.end()) return it->second;
   }
   return d;
