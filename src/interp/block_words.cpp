@@ -160,10 +160,10 @@ NCOFFSET_INLINE_STEP void Interpreter::programWord(char c, const Stmt& st) {
     case 'D': {
       if (st.ext >= 0) raise(AlarmNumber::SyntaxError, "D takes no address extension");
       double d = value();
-      if (d < 0 || d != std::floor(d) || d > tool::kMaxEdge)
+      if (d < 0 || d != std::floor(d) || d > tools_.dNumbers().max_d)  // MD18105
         raise(AlarmNumber::ValueRange,
               fmt::format("value range exceeded: D{} (D numbers are whole, 0..{})", d,
-                          tool::kMaxEdge));
+                          tools_.dNumbers().max_d));
       words_.edge = static_cast<int>(d);
       return;
     }

@@ -300,6 +300,11 @@ void Interpreter::namedWord(const Stmt& st) {
     modal_.collision = CollisionCheck::Cdof2;
     return;
   }
+  if (w == "CUT2D" || w == "CUT2DF" || w == "CUT2DD" || w == "CUT2DFD") {  // group 22
+    modal_.cut2d_frame = w == "CUT2DF" || w == "CUT2DFD";
+    modal_.cut2d_differential = w == "CUT2DD" || w == "CUT2DFD";
+    return;
+  }
   if (w == "SUPA") {
     words_.suppress_frames = 1;
     return;

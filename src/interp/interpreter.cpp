@@ -46,6 +46,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
   sd_length_type_ = data_.find("$SC_TOOL_LENGTH_TYPE");
   md_carriers_ = data_.find("$MN_MM_NUM_TOOL_CARRIER");
   sd_carrier_fine_ = data_.find("$SC_TOCARR_FINE_CORRECTION");
+  configureDNumbers();
 }
 
 Interpreter::~Interpreter() = default;
@@ -414,6 +415,13 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
                  l.radius,
                  tools_.orientation(modal_.plane),
                  tools_.lengthVector(modal_.plane)};
+  for (size_t k = 0; k < 26; ++k) {
+    Value v;
+    const Value index = Value::integer(static_cast<double>(k + 1));
+    tools_.read("$P_AD", std::span<const Value>(&index, 1), true, modal_.plane, v);
+    report.tool.active_offset[k] = v.num;
+  }
+  report.tool.environments = static_cast<int>(tools_.environments().size());
   report.approach = motion_.approachPoints();
   for (const auto& [k, v] : vars_.globals()) report.variables[k] = &v;
   for (const auto& [k, v] : vars_.mainVariables()) report.variables[k] = &v;

@@ -176,7 +176,20 @@ class Interpreter final : public lang::Environment {
                    lang::Value& out);
   bool writeCarrier(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                     const lang::Value& v);
+  tool::SelectionContext selectionContext() const;
   lang::Value callLentoax(std::span<const lang::Value> args);
+  // The caller's array for an array parameter of `fn` (alarm 14020 for anything else).
+  std::span<lang::Value> arrayArgument(std::string_view fn, const lang::Value& ref, bool integer,
+                                       int rows, int cols, const char* what);
+
+  // --- D numbers, tool environments (tool_functions.cpp) ---
+  // CHKDNO, GETDNO, SETDNO, DZERO, GETACTTD, GETACTT, TOOLENV, DELTOOLENV, GETTENV, GETTCOR.
+  bool toolFunction(std::string_view name, std::span<const lang::Value> args, lang::Value& out);
+  void configureDNumbers();  // MD18102, MD18105, MD18106 into the tool selection
+  // Writes `v` to the k-th argument of the call of `fn` in this block (a VAR parameter).
+  void storeCallArgument(std::string_view fn, size_t k, const lang::Value& v, bool required);
+  lang::Value toolEnvironmentCall(std::string_view name, std::span<const lang::Value> args);
+  lang::Value callGettcor(std::span<const lang::Value> args);
 
   // --- system variables and frame functions (system_variables.cpp) ---
   bool readSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,

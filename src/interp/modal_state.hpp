@@ -52,8 +52,10 @@ struct ModalState {
   double feed = 0;                                 // F in mm/min (G94) as the control holds it
   double disc = 0;                                 // DISC=
   double offn = 0;                                 // OFFN=
-  int tool = 0;                                    // T
-  int edge = 0;                                    // D
+  bool cut2d_frame = false;         // group 22: CUT2DF, CUT2DFD (docs/radius-compensation.md)
+  bool cut2d_differential = false;  // group 22: CUT2DD, CUT2DFD (R = the differences only)
+  int tool = 0;                     // T
+  int edge = 0;                     // D
 };
 
 // Words of one block, collected before execution (their order inside a block does not matter

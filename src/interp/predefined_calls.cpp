@@ -41,6 +41,10 @@ namespace {
 }  // namespace
 
 bool Interpreter::predefinedWord(std::string_view name) {
+  if (name == "DZERO") {  // W1 2.1.5: invalidates every D number of the TO unit
+    tools_.invalidateDNumbers();
+    return true;
+  }
   const PredefinedName* p = findPredefinedName(name);
   if (!p) {
     // SETINT(3) PRIO=1 RETRACT: the name is the interrupt routine, assigned, not called (PM-JP

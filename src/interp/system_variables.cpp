@@ -93,6 +93,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     out = s.integer ? Value::integer(data_.get(id)) : Value::real(data_.get(id));
     return true;
   }
+  if (name == "CHKDNO") return tools_.read(name, idx, indexed, modal_.plane, out);  // no ()
   if (name.empty() || name[0] != '$') return false;
   if (tools_.read(name, idx, indexed, modal_.plane, out)) return true;
   if (readCarrier(name, idx, indexed, out)) return true;
@@ -163,6 +164,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     if (data_.spec(id).number == 28050) {  // MD28050 MM_NUM_R_PARAM: number of R parameters
       vars_.resizeR(static_cast<size_t>(data_.get(id)));
     }
+    if (const int md = data_.spec(id).number; md >= 18102 && md <= 18106) configureDNumbers();
     return;
   }
   if (tools_.write(name, idx, indexed, v)) return;
@@ -261,9 +263,10 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
     if (args.size() > 1) raise(AlarmNumber::WrongCallParams, "SETMS takes one spindle number");
     return Value::empty();
   }
-  if (name == "GETTCOR" || name == "SETTCOR")
+  if (Value out; toolFunction(name, args, out)) return out;  // tool_functions.cpp
+  if (name == "SETTCOR")
     raise(AlarmNumber::NotModelled,
-          fmt::format("{} (tool environments) is not modelled by ncoffset", name));
+          "SETTCOR (changing tool components, W1 2.10.6) is not modelled by ncoffset");
   if (Value out; predefinedCall(name, args, out)) return out;
   if (programExists(name))
     raise(AlarmNumber::NotModelled,

@@ -70,10 +70,14 @@ constexpr PredefinedName kNames[] = {
      "contour tolerance of the compressor and smoothing: bounds how far the interpolated path may "
      "leave the programmed one"},
     {"CUT2D", NameClass::Modelled, false, false, false,
-     "2½D radius compensation in the working plane G17/G18/G19: the default of group 22 and what "
-     "ncoffset computes"},
-    {"CUT2DF", NameClass::NotModelled, false, false, false,
-     "radius compensation in the plane of the active frame: not modelled yet"},
+     "2½D radius compensation in the working plane G17/G18/G19 of the machine (the default of "
+     "group 22; g_codes.cpp)"},
+    {"CUT2DD", NameClass::Modelled, false, false, false,
+     "as CUT2D with a differential tool: compensated by the radius minus $TC_DP6"},
+    {"CUT2DF", NameClass::Modelled, false, false, false,
+     "2½D radius compensation in the plane of the active frame"},
+    {"CUT2DFD", NameClass::Modelled, false, false, false,
+     "as CUT2DF with a differential tool: compensated by the radius minus $TC_DP6"},
     {"CUT3DC", NameClass::NotModelled, false, false, false,
      "3D circumferential milling compensation (5-axis): not modelled yet"},
     {"CUT3DCC", NameClass::NotModelled, false, false, false,
@@ -89,7 +93,8 @@ constexpr PredefinedName kNames[] = {
     {"CUTCONOF", NameClass::Modelled, false, false, false,
      "contour tool off: the default of its group, what ncoffset computes"},
     {"CUTCONON", NameClass::NotModelled, false, false, false,
-     "contour tool (edges as a contour): not modelled yet"},
+     "compensation of contour tools (W1 \"Contour tools\": several cutting edges "
+     "D1..Dn of one tool describe its contour) is not modelled"},
     {"CYCLE60", NameClass::NotModelled, false, false, true,
      "a machining cycle: the cycle program computes its own path; not modelled yet"},
     {"CYCLE61", NameClass::NotModelled, false, false, true,
@@ -188,8 +193,6 @@ constexpr PredefinedName kNames[] = {
     {"DELETE", NameClass::NoPathEffect, false, false, false,
      "deletes a file in the control's memory (file handling, no motion); its error variable is set "
      "to 0"},
-    {"DELTOOLENV", NameClass::NotModelled, false, false, false,
-     "tool environments: not modelled yet"},
     {"DISABLE", NameClass::NoPathEffect, false, false, false,
      "disables an interrupt (interrupts are never triggered here)"},
     {"DISPLOF", NameClass::NoPathEffect, false, false, false,
@@ -242,7 +245,6 @@ constexpr PredefinedName kNames[] = {
     {"FZ", NameClass::NoPathEffect, false, false, false,
      "feed per tooth (effective with G95, see docs/turning.md); the feed column keeps the "
      "programmed F"},
-    {"GETTCOR", NameClass::NotModelled, false, false, false, "tool environments: not modelled yet"},
     {"GROUP_BEGIN", NameClass::NoPathEffect, false, false, false,
      "marks a group of blocks for the program editor"},
     {"GROUP_END", NameClass::NoPathEffect, false, false, false, "end of GROUP_BEGIN"},
@@ -321,7 +323,8 @@ constexpr PredefinedName kNames[] = {
      "sets channel wait marks (one channel here)"},
     {"SETPIECE", NameClass::NoPathEffect, false, false, false,
      "piece count of the tool management"},
-    {"SETTCOR", NameClass::NotModelled, false, false, false, "tool environments: not modelled yet"},
+    {"SETTCOR", NameClass::NotModelled, false, false, false,
+     "changes tool components (W1 2.10.6): not modelled"},
     {"SF", NameClass::NoPathEffect, false, false, false,
      "start angle of a thread (G33, itself not modelled)"},
     {"SOFTA", NameClass::NoPathEffect, false, false, false,
@@ -344,7 +347,6 @@ constexpr PredefinedName kNames[] = {
      "programmable tool length offset: not modelled yet; 0 is accepted"},
     {"TOFFR", NameClass::NotModelled, true, false, false,
      "programmable tool radius offset: not modelled yet; 0 is accepted"},
-    {"TOOLENV", NameClass::NotModelled, false, false, false, "tool environments: not modelled yet"},
     {"TU", NameClass::NotModelled, false, false, false,
      "turn of the axes for a transformation (PTP): not modelled"},
     {"UPATH", NameClass::NoPathEffect, false, false, false,

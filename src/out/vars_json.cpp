@@ -82,6 +82,11 @@ void writeVariablesJson(std::ostream& out, const VariablesReport& report) {
       "\"$P_TOOLO\": [{},{},{}], \"$TOOL_LENGTH_BCS\": [{},{},{}]",
       t.tool, t.edge, l.x, l.y, l.z, t.radius, o.x + 0.0, o.y + 0.0, o.z + 0.0, len.x + 0.0,
       len.y + 0.0, len.z + 0.0);
+  // The D-number state: the active offset as $P_AD shows it (its CE last), the environments.
+  out << ", \"$P_AD\": [";
+  for (size_t k = 0; k < t.active_offset.size(); ++k)
+    out << (k ? "," : "") << fmt::format("{}", t.active_offset[k] + 0.0);
+  out << fmt::format("], \"$P_TOOLENVN\": {}", t.environments);
   // Smooth approach: P3 and P4 of the last evaluated approach (WCS), $P_APDV.
   const Vec3 apr = report.approach.apr, aep = report.approach.aep;
   out << fmt::format(", \"$P_APR\": [{},{},{}], \"$P_AEP\": [{},{},{}], \"$P_APDV\": {}",

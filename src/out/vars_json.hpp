@@ -3,6 +3,7 @@
 // main program (and the global ones) by name, as one JSON object.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <iosfwd>
 #include <map>
@@ -22,8 +23,10 @@ struct ToolReadout {
   int edge = 0;
   Vec3 lengths;  // L1, L2, L3 with wear
   double radius = 0;
-  Vec3 orientation;  // unit vector along the tool
-  Vec3 length_bcs;   // the length vector in the BCS
+  Vec3 orientation;                        // unit vector along the tool
+  Vec3 length_bcs;                         // the length vector in the BCS
+  std::array<double, 26> active_offset{};  // $P_AD[1..26]: $TC_DP1..25 and the CE number
+  int environments = 0;                    // $P_TOOLENVN
 };
 
 struct VariablesReport {

@@ -25,7 +25,8 @@ int ToolSelection::resolveName(const std::string& name) const {
 void ToolSelection::execute(const ToolWords& w, bool change_on_t, const SelectionContext& ctx) {
   if (w.tool) {
     int t = *w.tool;
-    if (t != 0 && !tools_.tool(t))
+    // Flat D numbers: T names no tool in the offset memory (W1 "Flat D number structure").
+    if (t != 0 && !dconf_.flat && !tools_.tool(t))
       raise(AlarmNumber::ToolNotExisting, fmt::format("T= {} not existing", t));
     if (change_on_t)
       changeTool(t, w.edge.has_value(), ctx);
@@ -41,6 +42,7 @@ void ToolSelection::execute(const ToolWords& w, bool change_on_t, const Selectio
 
 void ToolSelection::changeTool(int t, bool edge_programmed, const SelectionContext& ctx) {
   active_tool_ = t;
+  if (dconf_.flat) return;  // flat D numbers: only D selects an offset (docs/tool-offsets.md)
   if (t == 0) {
     selectEdge(0, ctx);
     return;
@@ -56,8 +58,12 @@ void ToolSelection::selectEdge(int d, const SelectionContext& ctx) {
     edge_ = EdgeSnapshot{};
     return;
   }
-  const EdgeData* e = tools_.edge(active_tool_, d);
-  if (!e) edgeMissing(active_tool_, d);
+  const EdgeData* e = tools_.edge(edgeOwner(), d);
+  if (!e) {
+    if (dconf_.flat)
+      raise(AlarmNumber::EdgeNotExisting, fmt::format("D no. = {} not existing (flat D)", d));
+    edgeMissing(active_tool_, d);
+  }
   active_edge_ = d;
   edge_.valid = true;
   edge_.data = *e;

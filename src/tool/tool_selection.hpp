@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "lang/value.hpp"
 #include "ncoffset/tool.hpp"
@@ -33,9 +34,55 @@ struct ToolWords {
   bool tool_change = false;  // M6 (MD22560) for the master spindle
 };
 
+// The D number structure (W1 "Free assignment of D numbers", "Flat D number structure"):
+// MD18102 (1: flat, D without T), MD18105 (highest D number), MD18106 (edges per tool).
+struct DNumberConfig {
+  bool flat = false;
+  int max_d = 9;
+  int max_per_tool = 9;
+  // CHKDNO, GETDNO, SETDNO, DZERO and $TC_DPCE act only when MD18105 > MD18106 (W1).
+  bool freeNumbers() const { return max_d > max_per_tool; }
+};
+
+// A saved tool environment (TOOLENV, W1 "Working with tool environments"): what GETTCOR needs
+// to evaluate the tool data later as at the TOOLENV call.
+struct ToolEnvironment {
+  std::string name;
+  Plane plane = Plane::G17;
+  ToolSettings settings;
+  std::array<bool, 3> mirrored{false, false, false};
+  Mat3 orientation;  // rotation and mirroring of the complete frame (WCS -> BCS, no scale)
+  int t = 0, d = 0, dl = 0;
+};
+
 class ToolSelection {
  public:
   explicit ToolSelection(size_t max_edges) : max_edges_(max_edges) {}
+
+  // D numbers (src/tool/d_numbers.cpp).
+  void configure(const DNumberConfig& c) { dconf_ = c; }
+  const DNumberConfig& dNumbers() const { return dconf_; }
+  struct DCollision {
+    int t1 = 0, t2 = 0, d = 0;
+  };
+  // CHKDNO(t1, t2, d) (0: all): true when unique; else the first collision in `c`.
+  bool checkDNumbers(int t1, int t2, int d, DCollision& c) const;
+  int getDNumber(int t, int ce) const;                    // GETDNO: 0 none, > 32000 invalidated
+  bool setDNumber(int t, int ce, int d);                  // SETDNO
+  void invalidateDNumbers();                              // DZERO
+  int toolOfDNumber(int d, int& t) const;                 // GETACTTD: status 0, -1, -2, -5
+  int toolOfName(const std::string& name, int& t) const;  // GETACTT: status 0, -1
+  int cuttingEdgeNumber(int t, int d) const;              // $TC_DPCE[t,d]
+
+  // Tool environments (src/tool/tool_environment.cpp).
+  std::vector<ToolEnvironment>& environments() { return envs_; }
+  const std::vector<ToolEnvironment>& environments() const { return envs_; }
+  ToolEnvironment currentEnvironment(const ToolSettings& s, Plane plane,
+                                     const std::array<bool, 3>& mirrored,
+                                     const Mat3& orientation) const;
+  // GETTCOR: fills len[0..10]; returns the status (0, -2 .. -9).
+  int toolCorrection(std::span<lang::Value> len, const std::string& comp,
+                     const ToolEnvironment& env) const;
 
   // Executes T, M6 and D of a block (MD22550 = 0: T changes the tool; 1: T preselects, M6
   // changes). Alarms 17191 (tool not existing), 17181 (edge not existing).
@@ -48,6 +95,9 @@ class ToolSelection {
   bool hasEdge() const { return edge_.valid; }
   // The compensation radius of the active edge (edge + wear), 0 without an edge.
   double radius() const { return edge_.valid ? edge_.radius : 0.0; }
+  // CUT2DD/CUT2DFD: the radius minus $TC_DP6 (the standard tool's): the wear (W1 "differential
+  // tool"; docs/radius-compensation.md "CUT2D, CUT2DF").
+  double radiusDifference() const { return edge_.valid ? edge_.radius - edge_.data.dp[6] : 0.0; }
   // The BCS vector from the tool tip to the carrier reference point in `plane` (zero without
   // an edge), computed once per selection and plane.
   // (Inline: asked for every linear block.)
@@ -93,7 +143,25 @@ class ToolSelection {
   void cache(Plane plane) const;
   bool cachedFor(Plane plane) const { return edge_.offset_cached && edge_.cached_plane == plane; }
 
+  // The edge a D selects: of the active tool, or with flat D numbers (MD18102 = 1) of the one
+  // flat table (kept as tool 0).
+  int edgeOwner() const { return dconf_.flat ? 0 : active_tool_; }
+  void createEdge(int t, int d);  // counts and numbers a new edge (MD18106, $TC_DPCE)
+  void setCuttingEdgeNumber(int t, int d, double ce);
+  // Grinding tools (src/tool/grinding.cpp): $TC_TPG1..9 with their ranges, and the chaining
+  // rule $TC_TPG2 that keeps $TC_DPn of the wheel's edges D1 and D2 equal.
+  void writeGrindingData(int t, int n, double x);
+  void chainGrindingEdges(int t, int d, int n);
+  // $P_AD[1..26]: the active offset's $TC_DP1..25 and its cutting edge number (W1).
+  // $P_TOOLENVN (number of saved environments), $P_TOOLENV[n] (the name of the n-th).
+  bool readEnvironment(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                       lang::Value& out) const;
+  bool readActiveOffset(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                        lang::Value& out) const;
+
   ToolStore tools_;
+  DNumberConfig dconf_;
+  std::vector<ToolEnvironment> envs_;
   size_t max_edges_;
   size_t edges_ = 0;  // cutting edges in the offset memory
   int active_tool_ = 0;

@@ -9,17 +9,22 @@
 
 namespace ncoffset::tool {
 
-// Highest T number and D number (classic D structure, MD18102 = 0: D1..D9).
+// Highest T number, and the highest D number MD18105 may allow (W1 "Free assignment of D
+// numbers": D up to 32000; the default MD18105 = 9 keeps D1..D9). An edge invalidated by DZERO
+// keeps its number plus kInvalidD (GETDNO then returns a value above 32000, W1).
 inline constexpr int kMaxTool = 32000;
-inline constexpr int kMaxEdge = 9;
+inline constexpr int kMaxEdge = 32000;
+inline constexpr int kInvalidD = 32000;
 
 struct Tool {
   std::map<int, EdgeData> edges;
-  std::map<int, std::string> name;                    // $TC_TP2 tool identifier (index 2)
-  std::map<int, double> tp;                           // $TC_TPn numeric tool data
-  std::map<int, double> tpc;                          // $TC_TPCn user tool data
+  std::map<int, std::string> name;  // $TC_TP2 tool identifier (index 2)
+  std::map<int, double> tp;         // $TC_TPn numeric tool data
+  std::map<int, double> tpc;        // $TC_TPCn user tool data
+  std::map<int, double> tpg;        // $TC_TPG1..9 grinding data (W4, src/tool/grinding.cpp)
   std::map<std::pair<int, int>, double> edge_user;    // $TC_DPCn[t,d]: (d, n) -> value
   std::map<std::pair<int, int>, double> edge_normal;  // $TC_DPVN3..5[t,d]: (d, n) -> value
+  std::map<int, int> ce;                              // $TC_DPCE[t,d]: d -> cutting edge no.
 };
 
 class ToolStore {
@@ -41,6 +46,24 @@ class ToolStore {
   // Creates tool and edge on first write, as a TO_INI file does.
   EdgeData& edgeForWrite(int t, int d) { return tools_[t].edges[d]; }
   Tool& toolForWrite(int t) { return tools_[t]; }
+  // Renames edge `from` of tool `t` to `to` with all its data (SETDNO, DZERO); `to` is free.
+  void renameEdge(int t, int from, int to) {
+    Tool& tool = tools_[t];
+    auto node = tool.edges.extract(from);
+    node.key() = to;
+    tool.edges.insert(std::move(node));
+    for (auto* m : {&tool.edge_user, &tool.edge_normal}) {
+      std::map<std::pair<int, int>, double> moved;
+      for (auto it = m->lower_bound({from, 0}); it != m->end() && it->first.first == from;)
+        moved[{to, it->first.second}] = it->second, it = m->erase(it);
+      m->merge(moved);
+    }
+    if (auto c = tool.ce.extract(from)) {
+      c.key() = to;
+      tool.ce.insert(std::move(c));
+    }
+  }
+  const std::map<int, Tool>& all() const { return tools_; }
   // The tool whose $TC_TP2 identifier is `name` (0 if none).
   int findByName(const std::string& name) const {
     for (const auto& [t, tool] : tools_) {

@@ -54,24 +54,33 @@ struct ToolVariable {
 };
 
 bool parseToolVariable(std::string_view name, std::span<const Value> idx, bool indexed,
-                       ToolVariable& out) {
+                       const DNumberConfig& dconf, ToolVariable& out) {
   if (!splitToolName(name, out.kind, out.n)) return false;
   const std::string_view k = out.kind;
   const int n = out.n;
-  if (k == "TP" || k == "TPC") {
-    if (n < 1 || n > 20) return false;
+  if (k == "TP" || k == "TPC" || k == "TPG") {
+    if (n < 1 || n > (k == "TPG" ? 9 : 20)) return false;
     if (!indexed || idx.size() != 1)
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [T]", name));
     out.t = wholeIndex(idx[0], 1, kMaxTool, AlarmNumber::ArrayIndex1, "T");
     return true;
   }
   bool edge = (k == "DP" && n >= 1 && n <= 25) || (k == "DPV" && (n == 0 || (n >= 3 && n <= 5))) ||
-              (k == "DPVN" && n >= 3 && n <= 5) || (k == "DPC" && n >= 1 && n <= 10);
+              (k == "DPVN" && n >= 3 && n <= 5) || (k == "DPC" && n >= 1 && n <= 10) ||
+              (k == "DPCE" && n == 0);
   if (!edge) return false;
+  // Flat D numbers (MD18102 = 1): $TC_DPx[d] without T (W1 "Flat D number structure": each
+  // syntax loads only with its structure active).
+  if (dconf.flat) {
+    if (!indexed || idx.size() != 1)
+      raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [D] with flat D numbers", name));
+    out.d = wholeIndex(idx[0], 1, dconf.max_d, AlarmNumber::ArrayIndex1, "D");
+    return true;
+  }
   if (!indexed || idx.size() != 2)
     raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [T,D]", name));
   out.t = wholeIndex(idx[0], 1, kMaxTool, AlarmNumber::ArrayIndex1, "T");
-  out.d = wholeIndex(idx[1], 1, kMaxEdge, AlarmNumber::ArrayIndex2, "D");
+  out.d = wholeIndex(idx[1], 1, dconf.max_d, AlarmNumber::ArrayIndex2, "D");
   return true;
 }
 
@@ -106,11 +115,13 @@ bool ToolSelection::read(std::string_view name, std::span<const Value> idx, bool
     }
     return true;
   }
+  if (readActiveOffset(name, idx, indexed, out) || readEnvironment(name, idx, indexed, out))
+    return true;
   ToolVariable var;
-  if (!parseToolVariable(name, idx, indexed, var)) return false;
+  if (!parseToolVariable(name, idx, indexed, dconf_, var)) return false;
   const std::string_view kind = var.kind;
   const int n = var.n, t = var.t, d = var.d;
-  if (kind == "TP" || kind == "TPC") {
+  if (kind == "TP" || kind == "TPC" || kind == "TPG") {
     const Tool* tool = tools_.tool(t);
     if (!tool) raise(AlarmNumber::ToolNotExisting, fmt::format("T= {} not existing", t));
     if (kind == "TP" && n == 2) {
@@ -118,14 +129,16 @@ bool ToolSelection::read(std::string_view name, std::span<const Value> idx, bool
       out = Value::string(it == tool->name.end() ? std::string() : it->second);
       return true;
     }
-    auto& m = kind == "TP" ? tool->tp : tool->tpc;
+    auto& m = kind == "TP" ? tool->tp : kind == "TPC" ? tool->tpc : tool->tpg;
     auto it = m.find(n);
     out = Value::real(it == m.end() ? 0.0 : it->second);
     return true;
   }
   const EdgeData* e = tools_.edge(t, d);
   if (!e) edgeMissing(t, d);
-  if (kind == "DP")
+  if (kind == "DPCE")
+    out = Value::integer(cuttingEdgeNumber(t, d));
+  else if (kind == "DP")
     out = Value::real(e->dp[static_cast<size_t>(n)]);
   else if (kind == "DPV" && n == 0)
     out = Value::integer(e->dpv);
@@ -146,7 +159,7 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
       name == "$P_TOOLL" || name == "$P_TOOLO")
     raise(AlarmNumber::NameNotDefined, fmt::format("{} can only be read", name));
   ToolVariable var;
-  if (!parseToolVariable(name, idx, indexed, var)) return false;
+  if (!parseToolVariable(name, idx, indexed, dconf_, var)) return false;
   const std::string_view kind = var.kind;
   const int n = var.n, t = var.t, d = var.d;
   if (kind == "TP" && n == 2) {
@@ -161,6 +174,10 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
     tools_.toolForWrite(t).name[2] = std::move(text);
     return true;
   }
+  if (kind == "TPG") {
+    writeGrindingData(t, n, lang::toNumber(v, "grinding data"));
+    return true;
+  }
   if (kind == "TP" || kind == "TPC") {
     Tool& tool = tools_.toolForWrite(t);
     (kind == "TP" ? tool.tp : tool.tpc)[n] = lang::toNumber(v, "tool parameter");
@@ -171,18 +188,16 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
       (kind == "DP" && n == 2 && !(x >= 0 && x <= 9)))
     raise(AlarmNumber::ValueRange,
           fmt::format("value range exceeded: {}[{},{}] = {}", name, t, d, x));
-  if (!tools_.edge(t, d)) {
-    if (edges_ >= max_edges_)
-      raise(AlarmNumber::TooManyVariables,
-            fmt::format("more than {} cutting edges in the tool offset memory", max_edges_));
-    ++edges_;
-  }
+  if (!tools_.edge(t, d)) createEdge(t, d);
   EdgeData& e = tools_.edgeForWrite(t, d);
-  if (kind == "DP") {
+  if (kind == "DPCE") {
+    setCuttingEdgeNumber(t, d, x);
+  } else if (kind == "DP") {
     if ((n == 1 || n == 2) && x != std::floor(x))
       raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: {} = {} must be whole", name, x));
     e.dp[static_cast<size_t>(n)] = x;
+    chainGrindingEdges(t, d, n);  // $TC_TPG2 (W4)
   } else if (kind == "DPV" && n == 0) {
     e.dpv = static_cast<int>(lang::roundToInt(x));
   } else if (kind == "DPV") {

@@ -21,9 +21,27 @@ void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
           "change of compensation plane not possible while tool radius compensation is active");
   if (!m.frame.sameAs(selection_.frame))
     detail::notModelled("a frame change while compensation is active");
+  if (m.trc.frame_plane != selection_.trc.frame_plane)
+    detail::notModelled("a change between CUT2D and CUT2DF while compensation is active");
+  if (projected_) checkProjectable(m);
 }
 
-geom::PlaneMetric RadiusCompensation::planeMetric(const MotionBlock& m) {
+// CUT2D with a frame that tilts the working plane: the contour is compensated in its projection
+// into the machine's plane G17..G19 (W1 "CUT2D": the plane of G17..G19; CUT2DF: the frame's).
+// The projection of a circle is an ellipse and motion along the applicate moves the projection:
+// neither is modelled.
+void RadiusCompensation::checkProjectable(const MotionBlock& m) const {
+  if (m.motion == Motion::G2 || m.motion == Motion::G3)
+    detail::notModelled(
+        "a circle under CUT2D in a plane a frame tilts (its projection into G17..G19 is an "
+        "ellipse; CUT2DF compensates in the frame's plane)");
+  const int ap = planeAxes(m.plane).applicate;
+  if (std::fabs(m.end[ap] - m.start[ap]) > geom::tol::kPoint)
+    detail::notModelled("motion along the applicate under CUT2D in a plane a frame tilts");
+}
+
+geom::PlaneMetric RadiusCompensation::planeMetric(const MotionBlock& m, bool& projected) {
+  projected = false;
   // The tool radius is physical: not scaled by SCALE or a scaling settable frame (Mitsubishi
   // M700V PM 13.20, GSK980MDc p58 say so; the Siemens frame components hold no tool data;
   // docs/radius-compensation.md "Frames").
@@ -32,9 +50,21 @@ geom::PlaneMetric RadiusCompensation::planeMetric(const MotionBlock& m) {
   Vec3 ea, eo;
   ea[pa.abscissa] = 1;
   eo[pa.ordinate] = 1;
-  const Vec3 a = m.frame.linear() * ea, o = m.frame.linear() * eo;
+  Vec3 a = m.frame.linear() * ea, o = m.frame.linear() * eo;
   // (A programmed circle under different factors is an ellipse: the interpreter stops it with
   // 99012 before it gets here.)
+  // CUT2D: a frame that tilts the plane leaves the compensation in the machine's plane: the
+  // lengths are those of the contour's projection into it (checkProjectable).
+  if (!m.trc.frame_plane && (std::fabs(a[pa.applicate]) > geom::tol::kNumeric ||
+                             std::fabs(o[pa.applicate]) > geom::tol::kNumeric)) {
+    a[pa.applicate] = o[pa.applicate] = 0;
+    const double det = dot(a, a) * dot(o, o) - dot(a, o) * dot(a, o);
+    if (det < 1e-6)
+      detail::notModelled(
+          "CUT2D with a frame that turns the working plane perpendicular to "
+          "G17..G19 (no projection to compensate in; CUT2DF)");
+    projected = true;
+  }
   return geom::PlaneMetric::fromGram(dot(a, a), dot(a, o), dot(o, o));
 }
 
@@ -77,7 +107,7 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   settings_ = m.trc;
   selection_ = m;
-  metric_ = planeMetric(m);
+  metric_ = planeMetric(m, projected_);
   state_ = State::Selecting;
   dummy_blocks_ = 0;
 }

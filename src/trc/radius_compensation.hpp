@@ -79,7 +79,8 @@ class RadiusCompensation final : public core::Stage {
   // A G41/G42 block with plane motion: waits for the first element (W1 2-41).
   void startSelection(const core::MotionBlock& m);
   // The plane's lengths under the block's frame.
-  static geom::PlaneMetric planeMetric(const core::MotionBlock& m);
+  static geom::PlaneMetric planeMetric(const core::MotionBlock& m, bool& projected);
+  void checkProjectable(const core::MotionBlock& m) const;
   void motionSelecting(const core::MotionBlock& m);
   void motionOn(const core::MotionBlock& m);
   void checkSameSettings(const core::MotionBlock& m) const;
@@ -183,6 +184,7 @@ class RadiusCompensation final : public core::Stage {
   // The plane's lengths under the selection block's frame (SCALE): the window's elements are in
   // these coordinates, so that R is kept in the machine (toElement / geometry convert).
   geom::PlaneMetric metric_;
+  bool projected_ = false;  // CUT2D in a plane the frame tilts: compensated in its projection
 };
 
 }  // namespace ncoffset::trc

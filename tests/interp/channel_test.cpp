@@ -239,10 +239,28 @@ TEST(Channel, VariablesJson) {
   EXPECT_EQ(r.vars,
             "{\"R\": {\"1\": 3, \"7\": 0.3333333333333333}, "
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
-            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
+            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_AD\": "
+            "[0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0], "
+            "\"$P_TOOLENVN\": 0, \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
             "\"A\": 0.1, \"FLAG\": true, "
             "\"K\": [1,2,3], \"ST\": \"a\\\\b\"}\n");
+}
+
+TEST(Channel, VariablesJsonShowsTheActiveOffset) {
+  // The D-number state (docs/tool-offsets.md section 10): $P_AD = $TC_DP1..25 of the active
+  // offset and its cutting edge number (CE 2: the second edge of T3 created), $P_TOOLENVN.
+  Outcome r =
+      run("$MN_MM_MAX_CUTTING_EDGE_NO=40\n"
+          "$TC_DP1[3,31]=120 $TC_DP1[3,32]=120 $TC_DP3[3,32]=100 $TC_DP6[3,32]=4\n"
+          "T3 D32\n"
+          "M30\n");
+  ASSERT_EQ(r.result.status, RunResult::Status::Ok) << (r.result.alarm ? r.result.alarm->text : "");
+  EXPECT_NE(r.vars.find("\"$P_TOOLNO\": 3, \"$P_TOOL\": 32,"), std::string::npos) << r.vars;
+  EXPECT_NE(r.vars.find("\"$P_AD\": [120,0,100,0,0,4,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,2], "
+                        "\"$P_TOOLENVN\": 0"),
+            std::string::npos)
+      << r.vars;
 }
 
 TEST(Channel, VariablesJsonTwoDimensionsAndNoR) {
@@ -251,7 +269,9 @@ TEST(Channel, VariablesJsonTwoDimensionsAndNoR) {
   EXPECT_EQ(r.vars,
             "{\"R\": {}, "
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
-            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
+            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_AD\": "
+            "[0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0], "
+            "\"$P_TOOLENVN\": 0, \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
             "\"MM\": [[1,2],[3,4.5]]}\n");
 }

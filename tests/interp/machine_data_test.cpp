@@ -146,7 +146,7 @@ TEST(MachineData, ValuesNotModelled99013) {
   EXPECT_EQ(setAlarm(md, "MD10600", 2), toInt(AlarmNumber::UnitsOrData));  // Euler angles
   EXPECT_EQ(setAlarm(md, "SD42935", 1), toInt(AlarmNumber::UnitsOrData));  // WEAR_TRANSFORM
   EXPECT_EQ(setAlarm(md, "SD42942", 1), toInt(AlarmNumber::UnitsOrData));
-  EXPECT_EQ(setAlarm(md, "MD18102", 1), toInt(AlarmNumber::UnitsOrData));
+  EXPECT_EQ(setAlarm(md, "MD18102", 2), toInt(AlarmNumber::ValueRange));  // 0 or 1 (flat D)
   // Writing the modelled default is accepted.
   EXPECT_EQ(setAlarm(md, "SD42935", 0), 0);
   EXPECT_EQ(setAlarm(md, "MD10600", 1), 0);

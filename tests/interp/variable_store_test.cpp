@@ -7,18 +7,12 @@
 #include <vector>
 
 #include "ncoffset/alarm.hpp"
+#include "support/alarm_of.hpp"
 
 namespace ncoffset::interp {
 namespace {
 
-int alarmOf(auto&& f) {
-  try {
-    f();
-  } catch (const AlarmError& e) {
-    return e.number();
-  }
-  return 0;
-}
+using test::alarmOf;
 
 lang::Decl real(std::string_view name, int rows = 0, int cols = 0) {
   lang::Decl d;

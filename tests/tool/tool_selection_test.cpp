@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ncoffset/alarm.hpp"
+#include "support/alarm_of.hpp"
 
 namespace ncoffset::tool {
 namespace {
@@ -29,14 +30,7 @@ ToolSelection millingTool() {
   return s;
 }
 
-int alarmOf(auto&& f) {
-  try {
-    f();
-  } catch (const AlarmError& e) {
-    return e.number();
-  }
-  return 0;
-}
+using test::alarmOf;
 
 TEST(ToolSelection, TChangesTheToolAndTheDefaultEdgeIsSelected) {
   ToolSelection s = millingTool();
