@@ -47,6 +47,11 @@ enum class AlarmNumber : int {
   TrcTooManyEmptyBlocks = 10762,    // more blocks without plane motion than MD20250
   TrcBlockOmitted = 10763,          // warning: a block omitted by bottleneck detection
   TrcPreprocessorStop = 10778,      // STOPRE while compensation is active, SD42480 = 1
+  // --- contour definitions with angles (PM-NC "Contour definitions") ---
+  AngleLineInterpolation = 10792,  // ANG= in a circle block (a line with angles only)
+  AngleLineSecondBlock = 10793,    // the second block of a two-angle definition is missing
+  AngleLineSecondAngle = 10794,    // the second block has its end point but no ANG=
+  AngleLineContradiction = 10795,  // end point and angle contradict each other (no intersection)
   // --- the channel ---
   FeedNotProgrammed = 10860,   // G1/G2/G3 without a feedrate
   AddressTwice = 12010,        // an address twice in one block

@@ -65,14 +65,19 @@ void Interpreter::finishBlock() {
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   bool moved = false;
-  if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
-    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+  bool builds =
+      !axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None);
+  // Contour definitions, CIP/CT, polar coordinates (contour_definition.cpp): only blocks with
+  // such words, or while RNDM/CIP/CT/an ANG block is active.
+  if ((words_.contour | contour_active_) && contourBlock(axes_consumed, builds, moved))
+    builds = false;
+  if (builds) moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two
   // compensated elements counts against MD20250.
   if (!moved && !block_.stmts.empty() && block_.stmts.front().kind == lang::StmtKind::Word)
-    first_.blockWithoutMotion();
+    motion_.output().blockWithoutMotion();
 
   if (words_.end_program || words_.end_subprogram) {
     endWord(words_.end_program);  // section_repeat.cpp

@@ -245,6 +245,7 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     toolholderNumber(value());
     return;
   }
+  if (contourWord(st)) return;  // CHF=, RND=, ANG=, AP=, RP=, I1=, ... (contour_definition.cpp)
   // The other extended addresses: (b) accepted, (c) alarm 99010 (docs/names.md).
   if (predefinedAssign(name, Value::real(value()))) return;
   notModelled(fmt::format("address {}=", name),

@@ -239,10 +239,6 @@ void Interpreter::gNotModelled(int g) {
     case 74:
     case 75:
       notModelled(fmt::format("G{}", g), "reference point / fixed point approach");
-    case 110:
-    case 111:
-    case 112:
-      notModelled(fmt::format("G{}", g), "polar coordinates");
     case 291:
       notModelled("G291", "ISO dialect mode");
     case 931:
@@ -255,6 +251,10 @@ void Interpreter::gNotModelled(int g) {
 void Interpreter::gCode(int g) {
   if (gMotionPlaneFrame(g) || gCompensation(g) || gUnitsAndFeed(g)) return;
   if (g == 62 || g == 621) return;  // corner deceleration (group 57): speed, not path
+  if (g >= 110 && g <= 112) {
+    poleWord(g);  // the pole of polar coordinates (contour_definition.cpp)
+    return;
+  }
   gNotModelled(g);
   if (g >= 505 && g <= 599) {
     modal_.frame_select = g;
@@ -321,16 +321,20 @@ void Interpreter::namedWord(const Stmt& st) {
   }
   if (diameterWord(w)) return;
   if (w == "STOPRE") {
-    first_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
+    motion_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
     return;
   }
   if (isOneOf(w, {"STOPRE",  "BRISK",  "SOFT",    "DRIVE",   "FFWON",  "FFWOF",  "CFC",    "CFTCP",
                   "CFIN",    "TOWSTD", "TOWMCS",  "TOWWCS",  "TOWBCS", "TOWTCS", "TOWKCS", "SETMS",
                   "TRAFOOF", "SAVE",   "DISPLOF", "DISPLON", "WAITM",  "G64"}))
     return;  // no effect on the path
-  if (isOneOf(w, {"CIP", "CT", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "TRAORI", "TRANSMIT",
-                  "TRACYL", "TRAANG", "ROTS", "AROTS", "CROTS", "MOVT", "INVCW", "INVCCW",
-                  "OEMIPO1", "OEMIPO2", "EXTCALL"}))
+  if (w == "CIP" || w == "CT") {
+    circleFormWord(w == "CIP" ? CircleForm::Cip : CircleForm::Ct);
+    return;
+  }
+  if (isOneOf(w, {"ASPLINE", "BSPLINE", "CSPLINE", "POLY", "TRAORI", "TRANSMIT", "TRACYL", "TRAANG",
+                  "ROTS", "AROTS", "CROTS", "MOVT", "INVCW", "INVCCW", "OEMIPO1", "OEMIPO2",
+                  "EXTCALL"}))
     notModelled(w, "this function changes the path and ncoffset does not model it");
   if (toolholderNamedWord(w)) return;  // TCOABS, TCOFR.., PAROT, TOROT, TOFRAME..
   if (predefinedWord(w)) return;       // docs/names.md: (a)/(b) accepted, (c) alarm 99010

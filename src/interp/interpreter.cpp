@@ -150,7 +150,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     }
   }
   if (!init_file) {
-    first_.flush();  // the last compensated element ends on its normal
+    motion_.flush();  // the last compensated element ends on its normal
   }
   vars_.endRun(!init_file);
   if (!init_file) macros_.endRun();

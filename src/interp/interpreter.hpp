@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/stage.hpp"
+#include "interp/contour_state.hpp"
 #include "interp/frame_state.hpp"
 #include "interp/loop_watch.hpp"
 #include "interp/machine_data.hpp"
@@ -165,6 +166,20 @@ class Interpreter final : public lang::Environment {
   bool turningDataWrite(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                         const lang::Value& v);
 
+  // --- contour definitions, CIP/CT, polar coordinates (contour_definition.cpp) ---
+  bool contourWord(const lang::Stmt& st);
+  void circleFormWord(CircleForm form);
+  void poleWord(int g);
+  bool contourBlock(bool axes_consumed, bool& builds, bool& moved);
+  void definePole();
+  void polarTarget();
+  bool angleLine(bool builds);
+  void buildPendingLine(const Vec3& end);
+  void circleForm();
+  void cipCircle(PlaneAxes pa, const Vec3& from, const Vec3& to);
+  void ctCircle(PlaneAxes pa, const Vec3& from, const Vec3& to);
+  CornerRequest cornerRequest() const;
+
   // --- tool data and selection (tool_selection.cpp) ---
   void executeToolWords();
   // The orientable toolholder (toolholder_words.cpp, docs/toolholders.md).
@@ -232,7 +247,10 @@ class Interpreter final : public lang::Environment {
   VariableStore vars_;  // after data_: MD28050 sizes the R parameters
   ModalState modal_;
   BlockWords words_;
-  std::string call_name_;  // storage for an L<number> program name
+  ContourWords contour_words_;  // valid when words_.contour
+  ContourState contour_;
+  bool contour_active_ = false;  // RNDM, CIP/CT or a pending ANG block: every block looks
+  std::string call_name_;        // storage for an L<number> program name
 
   ProgramFlow flow_;
   lang::MacroTable macros_;             // DEFINE .. AS (PM-JP "Macro technique")

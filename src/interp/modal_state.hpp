@@ -88,6 +88,7 @@ struct BlockWords {
   core::SarKind sar = core::SarKind::None;        // G147..G348 (smooth approach / retraction)
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;
+  bool contour = false;  // a contour-definition word (CHF=, RND=, ANG=, AP=, CIP, G110, ...)
   int column = 0;
 
   void clear();

@@ -17,6 +17,7 @@ const core::BlockFrame MotionBuilder::kNoFrame;
 MotionBuilder::MotionBuilder(core::Stage& next, const MachineData& data, const FrameState& frames,
                              const tool::ToolSelection& tools)
     : next_(next),
+      corner_(next),
       data_(data),
       frames_(frames),
       tools_(tools),
@@ -84,6 +85,8 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     arc(w, modal, from, plain, to);
   } else if (!takeUpLength(w, modal, plain, to) && !sar) {
+    // A chamfer or rounding at a block that moves nowhere has no corner: reduced to nothing.
+    if (routed_) corner_.dropRequest();
     wcs_ = suppressed_ ? frames_.toWcs(bcs_) : to;
     return false;  // zero-length block: no segment
   }
@@ -93,12 +96,33 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   checkRange(plain);
   sarRequest(w, modal, at);
   ++m.seq;
-  core::Feedback back = next_.motion(m);
+  core::Feedback back = routed_ ? routedMotion(m) : next_.motion(m);
   if (back.approach) approach_points_ = *back.approach;
   if (back.end_point) to = *back.end_point;  // implicit retraction end point
   bcs_ = toBcs(plain, to);
   wcs_ = suppressed_ ? frames_.toWcs(bcs_) : to;
   return true;
+}
+
+Vec3 MotionBuilder::programmedTarget(const BlockWords& w, const ModalState& modal) const {
+  return target(w, modal, w.suppress_frames != 0 ? bcs_ : wcs_);
+}
+
+core::Feedback MotionBuilder::routedMotion(const core::MotionBlock& m) {
+  core::Feedback back = corner_.motion(m);
+  routed_ = !corner_.idle();
+  return back;
+}
+
+void MotionBuilder::flush() {
+  output().flush();
+  routed_ = !corner_.idle();
+}
+
+std::optional<Vec3> MotionBuilder::preprocessorStop(bool alarm) {
+  std::optional<Vec3> at = output().preprocessorStop(alarm);
+  routed_ = !corner_.idle();
+  return at;
 }
 
 void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3& from, bool plain,

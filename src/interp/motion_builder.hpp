@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/stage.hpp"
+#include "interp/corner_stage.hpp"
 #include "interp/frame_state.hpp"
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
@@ -46,6 +47,21 @@ class MotionBuilder {
   // $P_APR, $P_AEP, $P_APDV as the smooth approach fed them back.
   const core::ApproachPoints& approachPoints() const { return approach_points_; }
 
+  // Contour definitions (contour_definition.cpp): the block being built gets a chamfer or
+  // rounding at its end; the blocks go through the corner stage until it holds nothing.
+  void cornerRequest(const CornerRequest& r) {
+    corner_.request(r);
+    routed_ = true;
+  }
+  // The stage after the interpreter for the calls that are not motions.
+  core::Stage& output() { return routed_ ? static_cast<core::Stage&>(corner_) : next_; }
+  void flush();
+  std::optional<Vec3> preprocessorStop(bool alarm);
+  // The block's end point as programmed (G90/G91, AC/IC, diameters) from the last point.
+  Vec3 programmedTarget(const BlockWords& w, const ModalState& modal) const;
+  // The last block handed on (CT: the tangent of the previous element).
+  const core::MotionBlock& lastBlock() const { return m_; }
+
  private:
   Vec3 target(const BlockWords& w, const ModalState& modal, const Vec3& from) const;
   // G2/G3: end point and centre by geom::solveArc (PM-NC "Circular interpolation").
@@ -63,7 +79,11 @@ class MotionBuilder {
   const Affine& frame() const { return suppressed_ ? kNoFrame.map() : frames_.map(); }
 
   static const core::BlockFrame kNoFrame;
+  core::Feedback routedMotion(const core::MotionBlock& m);
+
   core::Stage& next_;
+  CornerStage corner_;
+  bool routed_ = false;  // corner_ holds a block or has a request: motions go through it
   const MachineData& data_;
   const FrameState& frames_;
   const tool::ToolSelection& tools_;

@@ -34,7 +34,7 @@ int stateAxisIndex(const Value& v, std::string_view name) {
 // or with radius compensation active the point on the normal where the stop ended the contour.
 Vec3 Interpreter::mainRunStop() {
   const std::optional<Vec3> moved =
-      first_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
+      motion_.preprocessorStop(data_.get("$SC_STOP_CUTCOM_STOPRE") != 0);
   return moved ? *moved : motion_.wcs();
 }
 
