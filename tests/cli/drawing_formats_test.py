@@ -57,10 +57,12 @@ out = os.path.join(d, "r.html")
 p = run("--init", os.path.join(examples, "frames.INI"), "-o", out, frames)
 html = open(out).read() if os.path.exists(out) else ""
 check("html: exit 0", p.returncode == 0, p.stderr)
-check("html: one document with one inline SVG", html.startswith("<!DOCTYPE html>")
-      and html.rstrip().endswith("</html>") and html.count("<svg ") == 1, html[:80])
-check("html: self-contained", not any(s in html for s in ("<script", "<link", "src=", "href=")))
-check("html: summary and table", "<h2>Summary</h2>" in html and "<table class=\"segments\">" in html)
+check("html: one document with the drawing's svg", html.startswith("<!DOCTYPE html>")
+      and html.rstrip().endswith("</html>") and html.count('<svg id="nco-svg"') == 1, html[:80])
+check("html: self-contained (inline data and script only)",
+      html.count("<script") == 2 and not any(s in html for s in ("<link", " src=", "href=", "url(")))
+check("html: summary, the data and the program text",
+      "<h2>Summary</h2>" in html and 'id="nco-data"' in html and "frames.MPF" in html)
 
 out = os.path.join(d, "c.MPF")
 p = run("-o", out, frames)
@@ -89,7 +91,7 @@ if not isinstance(root, str):
 lathe = [os.path.join(examples, n) for n in ("lathe.INI", "lathe_tools.INI", "lathe.MPF")]
 out = os.path.join(d, "lathe.html")
 p = run("--init", lathe[0], "--init", lathe[1], "--view", "zx", "-o", out, lathe[2])
-check("lathe: html report", p.returncode == 0 and "<svg" in open(out).read(), p.stderr)
+check("lathe: html report", p.returncode == 0 and '"view":"zx"' in open(out).read(), p.stderr)
 p = run("--init", lathe[0], "--init", lathe[1], "--diameter", "-o", os.path.join(d, "l.svg"),
         lathe[2])
 check("lathe: --diameter refused for svg", p.returncode == 1 and "--diameter" in p.stderr,
