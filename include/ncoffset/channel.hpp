@@ -89,8 +89,8 @@ class Channel {
   // program was read (the HTML report lists them beside the drawing).
   int fileCount() const;
   std::string_view fileText(int index) const;
-  // An axis machine datum ($MA_MAX_AX_VELO, ...) of geometry axis 0 X, 1 Y, 2 Z by its name
-  // without prefix; NaN for a name ncoffset does not know.
+  // An axis machine datum of geometry axis 0 X, 1 Y, 2 Z by its name ("$MA_MAX_AX_VELO");
+  // NaN for a name ncoffset does not know.
   double axisMachineData(std::string_view name, int axis) const;
   // The blocks executed so far (the progress line of the command line).
   long long blocksExecuted() const;

@@ -33,6 +33,13 @@ Vec3 limitingDirection(const Segment& s, double length) {
 
 }  // namespace
 
+void TimeEstimate::setDynamics(const AxisDynamics& d) {
+  for (size_t i = 0; i < 3; ++i) {
+    if (d.max_velocity[i] > 0) dyn_.max_velocity[i] = d.max_velocity[i];
+    if (d.max_acceleration[i] > 0) dyn_.max_acceleration[i] = d.max_acceleration[i];
+  }
+}
+
 double trapezoidSeconds(double length, double v, double a) {
   if (length <= 0 || v <= 0) return 0;
   if (!(a > 0) || std::isinf(a)) return length / v;

@@ -21,7 +21,8 @@ struct AxisDynamics {
 
 class TimeEstimate {
  public:
-  void setDynamics(const AxisDynamics& d) { dyn_ = d; }
+  // Values that are not positive numbers keep the default (an unknown machine datum).
+  void setDynamics(const AxisDynamics& d);
   void segment(const Segment& s);
   void spindle(const SpindleEvent& e) {
     if (e.spindle <= 1) speed_ = e.speed;  // the master spindle (no address extension or S1)

@@ -93,8 +93,8 @@ ncoffset::out::ReportContext reportContext(const ncoffset::Channel& channel) {
   c.dynamics = [&channel] {
     ncoffset::out::AxisDynamics dyn;
     for (int i = 0; i < 3; ++i) {
-      dyn.max_velocity[static_cast<size_t>(i)] = channel.axisMachineData("MAX_AX_VELO", i);
-      dyn.max_acceleration[static_cast<size_t>(i)] = channel.axisMachineData("MAX_AX_ACCEL", i);
+      dyn.max_velocity[static_cast<size_t>(i)] = channel.axisMachineData("$MA_MAX_AX_VELO", i);
+      dyn.max_acceleration[static_cast<size_t>(i)] = channel.axisMachineData("$MA_MAX_AX_ACCEL", i);
     }
     return dyn;
   };

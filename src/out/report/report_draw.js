@@ -65,10 +65,19 @@ NCO.pathD = function (pts) {
   return d;
 };
 
-// The segments of p in view (their screen box meets the drawing), in order.
+// The segments of p in view (their screen box meets the drawing), in order. All of them when
+// the whole drawing is in view (as after fit: no test per segment).
 NCO.visible = function (p) {
-  const T = NCO.T, q = [0, 0], r = [0, 0], vis = new Int32Array(p.n);
-  let m = 0;
+  const T = NCO.T, q = [0, 0], r = [0, 0], vis = new Int32Array(p.n), b = NCO.bbox;
+  let m = 0, inside = true;
+  for (let c = 0; c < 8 && inside; ++c) {
+    NCO.screen(b[c & 1 ? 3 : 0], b[c & 2 ? 4 : 1], b[c & 4 ? 5 : 2], q);
+    inside = q[0] >= 0 && q[0] <= T.w && q[1] >= 0 && q[1] <= T.h;
+  }
+  if (inside) {
+    for (let i = 0; i < p.n; ++i) vis[i] = i;
+    return vis;
+  }
   for (let i = 0; i < p.n; ++i) {
     NCO.screen(p.x[i], p.y[i], p.z[i], q);
     NCO.screen(p.sx[i], p.sy[i], p.sz[i], r);
