@@ -7,10 +7,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ncoffset/alarm.hpp"
 #include "ncoffset/path.hpp"
+#include "ncoffset/tool.hpp"
 
 namespace ncoffset {
 
@@ -83,6 +85,17 @@ class Channel {
 
   // The file name of a Segment::file index.
   const std::string& fileName(int index) const;
+  // The files loaded so far (Segment::file indices 0..fileCount()-1) and their text, as the
+  // program was read (the HTML report lists them beside the drawing).
+  int fileCount() const;
+  std::string_view fileText(int index) const;
+  // An axis machine datum of geometry axis 0 X, 1 Y, 2 Z by its name ("$MA_MAX_AX_VELO");
+  // NaN for a name ncoffset does not know.
+  double axisMachineData(std::string_view name, int axis) const;
+  // The blocks executed so far (the progress line of the command line).
+  long long blocksExecuted() const;
+  // The cutting edge T, D of the offset memory as it is now (nullopt: none).
+  std::optional<EdgeData> toolEdge(int tool, int edge) const;
   // R parameters that were written and the main program's user variables, as JSON (the
   // `--vars` contract of design.md).
   void writeVariablesJson(std::ostream& out) const;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "interp/channel_impl.hpp"
 
@@ -84,6 +85,32 @@ void Channel::setSearchPath(std::vector<std::filesystem::path> path) {
 
 const std::string& Channel::fileName(int index) const {
   return impl_->interp.fileName(index);
+}
+
+int Channel::fileCount() const {
+  return static_cast<int>(impl_->interp.fileCount());
+}
+
+std::string_view Channel::fileText(int index) const {
+  return impl_->interp.fileText(index);
+}
+
+double Channel::axisMachineData(std::string_view name, int axis) const {
+  const interp::MachineData& md = impl_->interp.machineData();
+  int id = md.find(name);
+  if (id < 0 || !md.isAxisData(id) || axis < 0 || axis > 2)
+    return std::numeric_limits<double>::quiet_NaN();
+  return md.get(id, axis);
+}
+
+long long Channel::blocksExecuted() const {
+  return impl_->interp.blocksExecuted();
+}
+
+std::optional<EdgeData> Channel::toolEdge(int tool, int edge) const {
+  const EdgeData* e = impl_->interp.toolStore().edge(tool, edge);
+  if (!e) return std::nullopt;
+  return *e;
 }
 
 void Channel::writeVariablesJson(std::ostream& out) const {

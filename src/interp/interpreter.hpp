@@ -49,6 +49,13 @@ class Interpreter final : public lang::Environment {
   // The text of the line alarmLoc() names ("" where it is not known).
   std::string alarmSourceLine(const AlarmError& e) const;
   const std::string& fileName(int id) const { return flow_.fileName(id); }
+  // What the HTML report shows besides the path: the files of the run with their text, the
+  // axis dynamics ($MA_...) and the offset memory.
+  size_t fileCount() const { return flow_.fileCount(); }
+  std::string_view fileText(int id) const { return flow_.text(id); }
+  const MachineData& machineData() const { return data_; }
+  const tool::ToolStore& toolStore() const { return tools_.store(); }
+  long long blocksExecuted() const { return executed_; }
   // The transverse axis of MD20100 (0 X, 1 Y, 2 Z; -1 none).
   int transverseAxis() const;
   void writeVariablesJson(std::ostream& out) const;

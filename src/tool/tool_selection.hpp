@@ -91,6 +91,8 @@ class ToolSelection {
   int resolveName(const std::string& name) const;
 
   int activeTool() const { return active_tool_; }
+  // The offset memory as it is now (the HTML report's tool table).
+  const ToolStore& store() const { return tools_; }
   int activeEdge() const { return active_edge_; }
   bool hasEdge() const { return edge_.valid; }
   // The compensation radius of the active edge (edge + wear), 0 without an edge.

@@ -100,16 +100,22 @@ for fmt_ in ("svg", "html"):
     out = os.path.join(d, f"p.{fmt_}")
     p = run("--decimals", "1", "-o", out, prog)
     text = open(out).read()
-    paths = re.findall(r' d="([^"]*)"', text[text.index('<g id="programmed">'):])
-    nums = [n for dd in paths for n in re.findall(r"-?\d[\d.eE+-]*", dd)]
+    if fmt_ == "svg":
+        paths = re.findall(r' d="([^"]*)"', text[text.index('<g id="programmed">'):])
+        nums = [n for dd in paths for n in re.findall(r"-?\d[\d.eE+-]*", dd)]
+    else:  # the report's data: the coordinates, centres and feeds of both paths
+        data = json.loads(re.search(r'<script type="application/json" id="nco-data">(.*?)</script>',
+                                    text, re.S).group(1))
+        nums = [str(v) for path in (data["out"], data["prog"]) for col in "XYZ" for v in path[col]]
+        nums += [str(v) for path in (data["out"], data["prog"]) for a in path["A"] for v in a[1:7]]
     check(f"{fmt_} --decimals 1: the path's numbers (not the legend's) have at most 1 decimal",
           p.returncode == 0 and nums and not bad_numbers(nums, 1), bad_numbers(nums, 1)[:5])
     if fmt_ == "svg":
         ET.fromstring(text)  # still well-formed
     else:
-        cells = re.findall(r'<td class="n">([^<]*)</td>', text)
-        cells = [c for c in cells if not c.endswith(" mm") and "&" not in c]
-        check("html --decimals 1: table numbers at most 1 decimal",
+        ranges = re.findall(r'<th>[XYZ] range</th><td class="n">([^<]*)</td>', text)
+        cells = [c for r in ranges for c in r.split(" &#8230; ")]
+        check("html --decimals 1: the X/Y/Z ranges have at most 1 decimal",
               cells and not bad_numbers(cells, 1), bad_numbers(cells, 1)[:5])
 
 # The mpf header and blocks, MCS and WCS; the rounded MPF runs again to the rounded path.

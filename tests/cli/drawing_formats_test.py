@@ -57,10 +57,12 @@ out = os.path.join(d, "r.html")
 p = run("--init", os.path.join(examples, "frames.INI"), "-o", out, frames)
 html = open(out).read() if os.path.exists(out) else ""
 check("html: exit 0", p.returncode == 0, p.stderr)
-check("html: one document with one inline SVG", html.startswith("<!DOCTYPE html>")
-      and html.rstrip().endswith("</html>") and html.count("<svg ") == 1, html[:80])
-check("html: self-contained", not any(s in html for s in ("<script", "<link", "src=", "href=")))
-check("html: summary and table", "<h2>Summary</h2>" in html and "<table class=\"segments\">" in html)
+check("html: one document with the drawing's svg", html.startswith("<!DOCTYPE html>")
+      and html.rstrip().endswith("</html>") and html.count('<svg id="nco-svg"') == 1, html[:80])
+check("html: self-contained (inline data and script only)",
+      html.count("<script") == 2 and not any(s in html for s in ("<link", " src=", "href=", "url(")))
+check("html: summary, the data and the program text",
+      "<h2>Summary</h2>" in html and 'id="nco-data"' in html and "frames.MPF" in html)
 
 out = os.path.join(d, "c.MPF")
 p = run("-o", out, frames)
@@ -84,12 +86,29 @@ if not isinstance(root, str):
     title = mark.find(f"{NS}title").text if mark is not None else ""
     check("alarm: title names it", title.startswith("alarm 14040 at ") and "A.MPF:2:" in title, title)
 
+# The time estimate: G0 X100 at MD32000 10000 mm/min (166.67 mm/s) with MD32300 1 m/s2:
+# 0.6 s + 0.1667 s; G1 X200 F6000 (100 mm/s): 1 s + 0.1 s; 1.867 s in all. With
+# $MA_MAX_AX_VELO[X]=6000 and $MA_MAX_AX_ACCEL[X]=2 from an init file: 1 s + 0.05 s twice.
+prog = os.path.join(d, "T.MPF")
+with open(prog, "w") as f:
+    f.write("G0 X100\nG1 X200 F6000\nM30\n")
+init = os.path.join(d, "axes.INI")
+with open(init, "w") as f:
+    f.write("$MA_MAX_AX_VELO[X]=6000\n$MA_MAX_AX_ACCEL[X]=2\nM17\n")
+for args, want in (((), "0:00:01.9 (without acceleration 0:00:01.6; rapid 0:00:00.8"),
+                   (("--init", init), "0:00:02.1 (without acceleration 0:00:02.0; rapid 0:00:01.1")):
+    out = os.path.join(d, "t.html")
+    p = run(*args, "-o", out, prog)
+    page = open(out).read() if os.path.exists(out) else ""
+    check(f"html time estimate {args}", p.returncode == 0 and f'id="nco-time">{want}' in page,
+          (p.stderr, page[page.find('nco-time'):page.find('nco-time') + 90]))
+
 # The lathe example (docs/turning.md) as an HTML report in the ZX plane; --diameter is refused
 # for drawings (a doubled axis would make its circles ellipses).
 lathe = [os.path.join(examples, n) for n in ("lathe.INI", "lathe_tools.INI", "lathe.MPF")]
 out = os.path.join(d, "lathe.html")
 p = run("--init", lathe[0], "--init", lathe[1], "--view", "zx", "-o", out, lathe[2])
-check("lathe: html report", p.returncode == 0 and "<svg" in open(out).read(), p.stderr)
+check("lathe: html report", p.returncode == 0 and '"view":"zx"' in open(out).read(), p.stderr)
 p = run("--init", lathe[0], "--init", lathe[1], "--diameter", "-o", os.path.join(d, "l.svg"),
         lathe[2])
 check("lathe: --diameter refused for svg", p.returncode == 1 and "--diameter" in p.stderr,

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""The progress line on long runs (issue 14, tools/ncoffset/progress_line.hpp): where stderr is a
-terminal, a run longer than a second shows `ncoffset: FILE:LINE: N M segments, T s` rewritten in
-place (\\r, erase to end of line) and erases it before an alarm line and at the end; where stderr
-is not a terminal, nothing but the alarm is written."""
+"""The progress line on long runs (issues 14 and 21, tools/ncoffset/progress_line.hpp): where
+stderr is a terminal, a run longer than a second shows `ncoffset: FILE:LINE: B M blocks (R M
+blocks/s), N M segments[, P % of the file], T s` rewritten in place (\\r, erase to end of line;
+the percentage in a file larger than 4 MiB) and erases it before an alarm line and at the end;
+where stderr is not a terminal, or with -q, nothing but the alarm is written."""
 import os, pty, subprocess, sys, tempfile
 
 binary = os.path.abspath(sys.argv[1])
@@ -23,9 +24,9 @@ with open(prog, "w") as f:
             "G0 X5\nR2=1\nGOTOF NOWHERE\nM30\n")
 
 
-def run_with_terminal_stderr():
+def run_with_terminal_stderr(*args, program="LONG.MPF"):
     master, slave = pty.openpty()
-    p = subprocess.Popen([binary, "-o", os.devnull, "LONG.MPF"], cwd=d, stderr=slave,
+    p = subprocess.Popen([binary, *args, "-o", os.devnull, program], cwd=d, stderr=slave,
                          stdout=subprocess.DEVNULL)
     os.close(slave)
     out = b""
@@ -44,7 +45,9 @@ def run_with_terminal_stderr():
 
 status, err = run_with_terminal_stderr()
 check("terminal: exit 2 (the alarm)", status == 2, status)
-check("terminal: a progress line", b"\r\x1b[Kncoffset: LONG.MPF:" in err and b"M segments" in err, err[:300])
+check("terminal: a progress line", b"\r\x1b[Kncoffset: LONG.MPF:" in err and b"M segments" in err
+      and b" M blocks (" in err and b" M blocks/s)" in err, err[:300])
+check("terminal: no percentage for a small file", b"% of the file" not in err, err[:300])
 alarm_at = err.find(b"LONG.MPF:9: alarm 14080")  # the file as named on the command line
 check("terminal: the alarm line", alarm_at > 0, err[-300:])
 check("terminal: the line is erased before the alarm", err[:alarm_at].endswith(b"\r\x1b[K"), err[max(0, alarm_at - 80):alarm_at + 40])
@@ -52,6 +55,21 @@ check("terminal: the line is erased before the alarm", err[:alarm_at].endswith(b
 p = subprocess.run([binary, "-o", os.devnull, "LONG.MPF"], cwd=d, capture_output=True, timeout=120)
 check("pipe: exit 2", p.returncode == 2, p.returncode)
 check("pipe: no progress line", b"segments" not in p.stderr and b"\r" not in p.stderr, p.stderr[:300])
+
+status, err = run_with_terminal_stderr("-q")
+check("-q: exit 2", status == 2, status)
+check("-q: no progress line, the alarm stays", b"segments" not in err and b"\x1b[K" not in err
+      and b"LONG.MPF:9: alarm 14080" in err, err[:300])
+
+# A program larger than 4 MiB: the same loop, then 5 MiB of comment lines.
+big = os.path.join(d, "BIG.MPF")
+with open(big, "w") as f:
+    f.write("R1=0\nWHILE R1<3000000\nG1 X10 Y0 F1000\nG1 X0 Y0\nR1=R1+1\nENDWHILE\n")
+    f.write(("; " + "x" * 98 + "\n") * 52000)
+    f.write("M30\n")
+status, err = run_with_terminal_stderr(program="BIG.MPF")
+check("large file: exit 0", status == 0, status)
+check("large file: how far through the file", b"% of the file" in err, err[:300])
 
 print("all progress checks hold" if not fails else f"{len(fails)} progress checks fail")
 sys.exit(1 if fails else 0)

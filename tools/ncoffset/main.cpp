@@ -26,10 +26,10 @@ namespace {
 // Prints MSG texts to stderr, keeps the progress line, and forwards the path.
 class MessagePrinter final : public ncoffset::PathSink {
  public:
-  MessagePrinter(ncoffset::PathSink& next, const ncoffset::Channel& channel)
-      : next_(next), channel_(channel), progress_(isatty(fileno(stderr)) != 0) {}
+  MessagePrinter(ncoffset::PathSink& next, const ncoffset::Channel& channel, bool quiet)
+      : next_(next), progress_(!quiet && isatty(fileno(stderr)) != 0, progressSource(channel)) {}
   void segment(const ncoffset::Segment& s) override {
-    progress_.segment(s, channel_.fileName(s.file));
+    progress_.segment(s);
     next_.segment(s);
   }
   void message(const ncoffset::SourceLoc& where, const std::string& text) override {
@@ -52,8 +52,14 @@ class MessagePrinter final : public ncoffset::PathSink {
   void finish(const ncoffset::Alarm* alarm) override { next_.finish(alarm); }
 
  private:
+  static ncoffset::cli::ProgressSource progressSource(const ncoffset::Channel& channel) {
+    ncoffset::cli::ProgressSource p;
+    p.file_name = [&channel](int i) -> const std::string& { return channel.fileName(i); };
+    p.file_text = [&channel](int i) { return channel.fileText(i); };
+    p.blocks = [&channel] { return channel.blocksExecuted(); };
+    return p;
+  }
   ncoffset::PathSink& next_;
-  const ncoffset::Channel& channel_;
   ncoffset::cli::ProgressLine progress_;
 };
 
@@ -73,7 +79,27 @@ struct Args {
   std::vector<std::string> path;  // --path: where subprograms and cycles are searched
   int decimals = -1;              // --decimals: -1 the shortest round-trip text
   bool diameter = false;
+  bool quiet = false;  // -q: no progress line
 };
+
+// What the HTML report reads from the channel: the files of the run, the offset memory and the
+// axis dynamics of the time estimate (MD32000, MD32300).
+ncoffset::out::ReportContext reportContext(const ncoffset::Channel& channel) {
+  ncoffset::out::ReportContext c;
+  c.file_count = [&channel] { return channel.fileCount(); };
+  c.file_name = [&channel](int i) -> const std::string& { return channel.fileName(i); };
+  c.file_text = [&channel](int i) { return channel.fileText(i); };
+  c.edge = [&channel](int t, int d) { return channel.toolEdge(t, d); };
+  c.dynamics = [&channel] {
+    ncoffset::out::AxisDynamics dyn;
+    for (int i = 0; i < 3; ++i) {
+      dyn.max_velocity[static_cast<size_t>(i)] = channel.axisMachineData("$MA_MAX_AX_VELO", i);
+      dyn.max_acceleration[static_cast<size_t>(i)] = channel.axisMachineData("$MA_MAX_AX_ACCEL", i);
+    }
+    return dyn;
+  };
+  return c;
+}
 
 std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
                                                const ncoffset::Channel& channel) {
@@ -84,8 +110,8 @@ std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
     return std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view),
                                                       true, d);
   if (a.format == "html")
-    return std::make_unique<ncoffset::out::HtmlReport>(out, ncoffset::out::viewFromName(a.view),
-                                                       a.program, a.coords, d);
+    return std::make_unique<ncoffset::out::HtmlReport>(
+        out, ncoffset::out::viewFromName(a.view), a.program, a.coords, d, reportContext(channel));
   if (a.format == "mpf")
     return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names, d, a.diameter);
   if (d >= 0) return std::make_unique<ncoffset::out::RoundedCsvWriter>(out, d);
@@ -94,7 +120,7 @@ std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
 
 // Runs the init files and the program: exit status 0, 1 (file error) or 2 (alarm).
 int runAll(const Args& a, ncoffset::Channel& channel, ncoffset::PathSink& writer) {
-  MessagePrinter sink(writer, channel);
+  MessagePrinter sink(writer, channel, a.quiet);
   auto report = [&](const ncoffset::RunResult& r) -> int {
     if (r.status == ncoffset::RunResult::Status::FileError) {
       writer.finish(nullptr);
@@ -190,6 +216,7 @@ int main(int argc, char** argv) {
   app.add_flag("--diameter", a.diameter,
                "csv, jsonl, mpf: the transverse axis (MD20100) as diameter values (default: "
                "radius values)");
+  app.add_flag("-q,--quiet", a.quiet, "no progress line on stderr (shown on a terminal otherwise)");
   auto& l = options.limits;
   app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
       ->capture_default_str()
