@@ -66,6 +66,12 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
     f = &frames_.programmable();
   else if (name == "$P_IFRAME")
     f = &frames_.settableActive();
+  else if (name == "$P_PARTFR")  // the toolholder's system frames (docs/toolholders.md)
+    f = &frames_.partFrame();
+  else if (name == "$P_TOOLFR")
+    f = &frames_.toolFrame();
+  else if (name == "$P_WPFRAME")
+    f = &frames_.workpieceFrame();
   else
     return nullptr;
   if (indexed && idx.size() != 2)
@@ -204,8 +210,8 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
       component(*f, comp, ax) = x;
     }
   }
-  // $P_UIFR takes effect at the next G500/G54..G599 (K2); $P_IFRAME and $P_PFRAME at once.
-  if (f != &frames_.programmable() && f != &frames_.settableActive()) return;
+  // $P_UIFR takes effect at the next G500/G54..G599 (K2); the active frames at once.
+  if (name == "$P_UIFR") return;
   frames_.update();
 }
 
