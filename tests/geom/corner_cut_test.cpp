@@ -7,23 +7,13 @@
 
 #include <cmath>
 
+#include "elements.hpp"
+
 namespace ncoffset::geom {
 namespace {
 
-Element line(Vec2 a, Vec2 b) {
-  Element e;
-  e.p0 = a;
-  e.p1 = b;
-  return e;
-}
-
-Element arc(Vec2 a, Vec2 b, Vec2 c, bool ccw) {
-  Element e = line(a, b);
-  e.arc = true;
-  e.c = c;
-  e.ccw = ccw;
-  return e;
-}
+using test::arc;
+using test::line;
 
 // Two lines at a 90 degree left turn at (40,0): the rounding of r = 5 touches 5 before and
 // after the corner, its centre (35,5), counter-clockwise.
