@@ -6,11 +6,11 @@
 
 namespace ncoffset::geom {
 
-namespace {
-
 double elementLength(const Element& e) {
   return e.arc ? e.radius() * std::fabs(e.sweep()) : length(e.p1 - e.p0);
 }
+
+namespace {
 
 // The longest chord from the corner end of the element that stays on it (an arc's chord grows
 // up to its diameter).
@@ -42,13 +42,13 @@ bool tangentJunction(const Element& e1, const Element& e2) {
 
 // The rounding's centre for radius r: the crossing of the two equidistants on the inside of the
 // corner whose feet lie on both elements, nearest the corner.
-std::optional<Crossing> roundingCentre(const Element& e1, const Element& e2, double d) {
+// `slack`: how far (mm) a tangent point may lie beyond an element's end.
+std::optional<Crossing> roundingCentre(const Element& e1, const Element& e2, double d,
+                                       double slack) {
   const auto q1 = equidistant(e1, d), q2 = equidistant(e2, d);
   if (!q1 || !q2) return std::nullopt;
   const double l1 = elementLength(e1), l2 = elementLength(e2);
-  auto on = [](double u, double len) {
-    return u * len >= -tol::kPoint && (u - 1) * len <= tol::kPoint;
-  };
+  auto on = [slack](double u, double len) { return u * len >= -slack && (u - 1) * len <= slack; };
   return nearestCrossing(
       *q1, *q2, [&](const Crossing& x) { return on(x.u1, l1) && on(x.u2, l2); },
       [&](const Crossing& x) { return (1 - x.u1) * l1 + x.u2 * l2; });
@@ -93,18 +93,18 @@ CornerCut roundCorner(const Element& e1, const Element& e2, double r) {
   if (tangentJunction(e1, e2) || r <= 0) return cut;
   const bool left = cross(e1.endTangent(), e2.startTangent()) > 0;
   const double side = left ? 1.0 : -1.0;
-  std::optional<Crossing> x = roundingCentre(e1, e2, side * r);
+  std::optional<Crossing> x = roundingCentre(e1, e2, side * r, tol::kPoint);
   double used = r;
   if (!x) {
     // Too large for the elements: the largest radius that fits (the manual: reduced).
     double lo = 0, hi = r;
     for (int i = 0; i < 100 && hi - lo > 1e-15 * (1 + hi); ++i) {
       const double mid = 0.5 * (lo + hi);
-      (roundingCentre(e1, e2, side * mid) ? lo : hi) = mid;
+      (roundingCentre(e1, e2, side * mid, 0) ? lo : hi) = mid;
     }
     used = lo;
     if (used <= tol::kInsert) return cut;
-    x = roundingCentre(e1, e2, side * used);
+    x = roundingCentre(e1, e2, side * used, 0);
     if (!x) return cut;
   }
   cut.u1 = std::clamp(x->u1, 0.0, 1.0);

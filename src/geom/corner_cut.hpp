@@ -18,6 +18,9 @@ struct CornerCut {
   double value = 0;       // the value used (reduced when the elements are too short)
 };
 
+// The length of a line or an arc (radius times sweep).
+double elementLength(const Element& e);
+
 enum class ChamferKind { Length, Leg };  // CHF= (the chamfer's length), CHR= (the legs)
 
 // A chamfer of the given kind and value. The manual: a value too large for the elements is

@@ -52,11 +52,13 @@ core::Feedback CornerStage::motion(const MotionBlock& m) {
   request_.kind = CornerRequest::Kind::None;
   MotionBlock b = m;
   if (held_) {
-    if (joinable(b))
-      cutCorner(b);
-    else
-      release();
+    const bool cut = joinable(block_, b);
+    const bool left = cut ? cutCorner(b) : true;
+    if (!cut) release();
     held_ = false;
+    // Reduced to the whole of b (PM-NC: a value too large is reduced): nothing of b is left,
+    // and a chamfer/rounding at its end has no length either.
+    if (!left) return {};
   }
   if (req.kind != CornerRequest::Kind::None) {
     if (b.sar.kind != core::SarKind::None)
@@ -79,12 +81,11 @@ void CornerStage::blockWithoutMotion() {
   if (++dummies_ > kMaxBlocksBetween) release();
 }
 
-bool CornerStage::joinable(const MotionBlock& b) const {
-  if (b.plane != block_.plane || b.sar.kind != core::SarKind::None ||
-      b.frame.state() != block_.frame.state())
+bool CornerStage::joinable(const MotionBlock& a, const MotionBlock& b) {
+  if (b.plane != a.plane || b.sar.kind != core::SarKind::None || b.frame.state() != a.frame.state())
     return false;  // a plane change: no chamfer/rounding (PM-NC); a frame change [D]
   const PlaneAxes pa = planeAxes(b.plane);
-  return movesInPlane(b, pa) && movesInPlane(block_, pa);
+  return movesInPlane(b, pa) && movesInPlane(a, pa);
 }
 
 void CornerStage::release() {
@@ -98,7 +99,7 @@ void CornerStage::replayDummies() {
   for (; dummies_ > 0; --dummies_) next_.blockWithoutMotion();
 }
 
-void CornerStage::cutCorner(MotionBlock& b) {
+bool CornerStage::cutCorner(MotionBlock& b) {
   const PlaneAxes pa = planeAxes(b.plane);
   if (block_.turns > 0 || b.turns > 0)
     core::notModelled("CHF/CHR/RND next to a circle with TURN=",
@@ -114,7 +115,7 @@ void CornerStage::cutCorner(MotionBlock& b) {
                                 r.value);
   if (!cut.inserted) {
     release();
-    return;
+    return true;
   }
   MotionBlock first = block_;
   first.end = pointOf(block_, pa, cut.q1, cut.u1);
@@ -134,11 +135,12 @@ void CornerStage::cutCorner(MotionBlock& b) {
   // FRC/FRCM are not active when the element is traversed at rapid (PM-NC).
   if (block_.has_feed && r.has_feed) inserted.feed = r.feed;
   b.start = inserted.end;
-  const double kept1 =
-      cut.u1 * (e1.arc ? e1.radius() * std::fabs(e1.sweep()) : geom::length(e1.p1 - e1.p0));
-  if (kept1 > geom::tol::kPoint) next_.motion(first);  // nothing left of it: not sent
+  const double rise2 = std::fabs(b.end[pa.applicate] - b.start[pa.applicate]);
+  held_ = false;
+  if (cut.u1 * geom::elementLength(e1) > geom::tol::kPoint) next_.motion(first);  // else all cut
   next_.motion(inserted);
   replayDummies();
+  return (1 - cut.u2) * geom::elementLength(e2) > geom::tol::kPoint || rise2 > geom::tol::kPoint;
 }
 
 }  // namespace ncoffset::interp

@@ -47,10 +47,10 @@ class CornerStage final : public core::Stage {
   // The held block goes on as programmed (no partner: no chamfer/rounding), then the blocks
   // without motion that came after it.
   void release();
-  bool joinable(const core::MotionBlock& b) const;
+  static bool joinable(const core::MotionBlock& a, const core::MotionBlock& b);
   // Cuts the corner between the held block and `b`: sends the held block's kept part and the
-  // inserted element; `b` keeps its part after the corner.
-  void cutCorner(core::MotionBlock& b);
+  // inserted element; `b` keeps its part after the corner. False when nothing of `b` is left.
+  bool cutCorner(core::MotionBlock& b);
   void replayDummies();
 
   core::Stage& next_;

@@ -8,25 +8,15 @@
 
 #include <cmath>
 
+#include "elements.hpp"
+
 namespace ncoffset::geom {
 namespace {
 
 constexpr double kTol = 1e-12;
 
-Element line(Vec2 p0, Vec2 p1) {
-  Element e;
-  e.p0 = p0;
-  e.p1 = p1;
-  return e;
-}
-
-Element arc(Vec2 p0, Vec2 p1, Vec2 c, bool ccw) {
-  Element e = line(p0, p1);
-  e.arc = true;
-  e.c = c;
-  e.ccw = ccw;
-  return e;
-}
+using test::arc;
+using test::line;
 
 void expectPoint(Vec2 p, double a, double o, double tol = kTol) {
   EXPECT_NEAR(p.a, a, tol);
