@@ -148,8 +148,9 @@ void HtmlReport::writeTools() {
     append(b, "</td></tr>\n");
   }
   append(b,
-         "</table>\n<p class=\"nco-note\">R: the edge's compensation radius with wear; L1 to L3 "
-         "and the type as $TC_DP3..5 and $TC_DP1 were at the end of the run.</p>\n");
+         "</table>\n<p class=\"nco-note\">R: the edge's compensation radius with wear; type, L1 "
+         "to L3 and the cutting edge position as $TC_DP1, $TC_DP3..5 and $TC_DP2 were when the "
+         "edge was selected.</p>\n");
 }
 
 void HtmlReport::writeNotes(const Alarm* alarm) {
