@@ -44,6 +44,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
   sd_wear_sign_ = data_.find("$SC_WEAR_SIGN");
   sd_length_const_ = data_.find("$SC_TOOL_LENGTH_CONST");
   sd_length_type_ = data_.find("$SC_TOOL_LENGTH_TYPE");
+  syncSumOffsetLimits();
 }
 
 Interpreter::~Interpreter() = default;
@@ -402,6 +403,7 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
                  l.radius,
                  tools_.orientation(modal_.plane),
                  tools_.lengthVector(modal_.plane)};
+  report.offsets = offsetReadout();
   report.approach = motion_.approachPoints();
   for (const auto& [k, v] : vars_.globals()) report.variables[k] = &v;
   for (const auto& [k, v] : vars_.mainVariables()) report.variables[k] = &v;

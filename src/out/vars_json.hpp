@@ -3,6 +3,7 @@
 // main program (and the global ones) by name, as one JSON object.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <iosfwd>
 #include <map>
@@ -26,9 +27,21 @@ struct ToolReadout {
   Vec3 length_bcs;   // the length vector in the BCS
 };
 
+// The active sum/setup offset DL with its values (L1, L2, L3, radius: $TC_SCPx3..x6 and
+// $TC_ECPx3..x6) and the programmed offsets TOFFL[0..3], TOFF[X,Y,Z], TOFFR
+// (docs/tool-offsets.md sections 10, 11).
+struct OffsetReadout {
+  int dl = 0;
+  std::array<double, 4> sum{}, setup{};
+  std::array<double, 4> toffl{};
+  Vec3 toff;
+  double toffr = 0;
+};
+
 struct VariablesReport {
   std::vector<std::pair<std::size_t, double>> r;  // R number and value, ascending
   ToolReadout tool;
+  OffsetReadout offsets;
   core::ApproachPoints approach;                                 // $P_APR, $P_AEP, $P_APDV
   std::map<std::string, const interp::UserVariable*> variables;  // sorted by name
 };

@@ -239,7 +239,9 @@ TEST(Channel, VariablesJson) {
   EXPECT_EQ(r.vars,
             "{\"R\": {\"1\": 3, \"7\": 0.3333333333333333}, "
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
-            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
+            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"DL\": 0, "
+            "\"$SUM_OFFSET\": [0,0,0,0], \"$SETUP_OFFSET\": [0,0,0,0], \"$P_TOFFL\": [0,0,0,0], "
+            "\"$P_TOFF\": [0,0,0], \"$P_TOFFR\": 0, \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
             "\"A\": 0.1, \"FLAG\": true, "
             "\"K\": [1,2,3], \"ST\": \"a\\\\b\"}\n");
@@ -251,7 +253,9 @@ TEST(Channel, VariablesJsonTwoDimensionsAndNoR) {
   EXPECT_EQ(r.vars,
             "{\"R\": {}, "
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
-            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_APR\": [0,0,0], "
+            "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"DL\": 0, "
+            "\"$SUM_OFFSET\": [0,0,0,0], \"$SETUP_OFFSET\": [0,0,0,0], \"$P_TOFFL\": [0,0,0,0], "
+            "\"$P_TOFF\": [0,0,0], \"$P_TOFFR\": 0, \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
             "\"MM\": [[1,2],[3,4.5]]}\n");
 }
