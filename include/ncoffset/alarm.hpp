@@ -84,6 +84,7 @@ enum class AlarmNumber : int {
   ArrayIndex1 = 17020,         // array index 1 out of range
   ArrayIndex2 = 17030,         // array index 2 out of range
   EdgeNotExisting = 17181,     // T no., D no. not existing
+  SumOffsetIllegal = 17182,    // DL= not defined for the edge or beyond MD18110
   ToolNotExisting = 17191,     // T not existing
   // --- ncoffset's own: limits (docs/limits.md) and what it does not model ---
   LineTooLong = 99001,       // block longer than --max-line-length

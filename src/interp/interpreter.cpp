@@ -47,6 +47,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
   md_carriers_ = data_.find("$MN_MM_NUM_TOOL_CARRIER");
   sd_carrier_fine_ = data_.find("$SC_TOCARR_FINE_CORRECTION");
   configureDNumbers();
+  syncSumOffsetLimits();
 }
 
 Interpreter::~Interpreter() = default;
@@ -422,6 +423,7 @@ void Interpreter::writeVariablesJson(std::ostream& out) const {
     report.tool.active_offset[k] = v.num;
   }
   report.tool.environments = static_cast<int>(tools_.environments().size());
+  report.offsets = offsetReadout();
   report.approach = motion_.approachPoints();
   for (const auto& [k, v] : vars_.globals()) report.variables[k] = &v;
   for (const auto& [k, v] : vars_.mainVariables()) report.variables[k] = &v;

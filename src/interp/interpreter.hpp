@@ -33,6 +33,10 @@
 #include "ncoffset/frame.hpp"
 #include "tool/tool_selection.hpp"
 
+namespace ncoffset::out {
+struct OffsetReadout;
+}
+
 namespace ncoffset::interp {
 
 class Interpreter final : public lang::Environment {
@@ -198,7 +202,6 @@ class Interpreter final : public lang::Environment {
                    lang::Value& out);
   bool writeCarrier(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                     const lang::Value& v);
-  tool::SelectionContext selectionContext() const;
   lang::Value callLentoax(std::span<const lang::Value> args);
   // The caller's array for an array parameter of `fn` (alarm 14020 for anything else).
   std::span<lang::Value> arrayArgument(std::string_view fn, const lang::Value& ref, bool integer,
@@ -229,6 +232,15 @@ class Interpreter final : public lang::Environment {
   bool predefinedWord(std::string_view name);
   // NAME(args) (WAITM(..), SETAL(..), ISVAR(..), CYCLE81(..)): false when unknown.
   bool predefinedCall(std::string_view name, std::span<const lang::Value> args, lang::Value& out);
+  // DL=, TOFFL=, TOFFL[n]=, TOFF[ax]=, TOFFR= and $P_TOFFL/$P_TOFF/$P_TOFFR
+  // (programmable_offsets.cpp): false for other names.
+  bool offsetWordWrite(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                       const lang::Value& v);
+  bool offsetWordRead(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                      lang::Value& out);
+  tool::SelectionContext selectionContext() const;
+  out::OffsetReadout offsetReadout() const;
+  void syncSumOffsetLimits();  // MD18110, MD18112 -> the tool selection
   // NAME=value, NAME[i]=value (ADIS=0.5, ACC[X]=80, DL=0): false when unknown.
   bool predefinedAssign(std::string_view name, const lang::Value& v);
   // Reading a (c) name: alarm 99010 (false when the table does not know it).

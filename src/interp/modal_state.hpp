@@ -82,6 +82,7 @@ struct BlockWords {
   bool end_subprogram = false;      // M17 / RET
   std::optional<int> tool;          // T (number; a T="name" is resolved when collected)
   std::optional<int> edge;          // D
+  std::optional<int> sum_offset;    // DL= (programmable_offsets.cpp)
   bool tool_change = false;         // M6 (MD22560) for the master spindle
   std::string_view call;            // subprogram to call at block end (block text or call_name_)
   std::optional<long long> repeat;  // P

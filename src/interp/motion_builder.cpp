@@ -27,7 +27,9 @@ MotionBuilder::MotionBuilder(core::Stage& next, const MachineData& data, const F
       md_insert_limit_(data.find("$MC_CUTCOM_CURVE_INSERT_LIMIT")),
       md_dummy_blocks_(data.find("$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS")),
       md_check_blocks_(data.find("$MC_CUTCOM_MAXNUM_CHECK_BLOCKS")),
-      md_sar_dummy_blocks_(data.find("$MC_WAB_MAXNUM_DUMMY_BLOCKS")) {}
+      md_sar_dummy_blocks_(data.find("$MC_WAB_MAXNUM_DUMMY_BLOCKS")),
+      sd_frame_incr_(data.find("$SC_FRAME_OFFSET_INCR_PROG")),
+      sd_tool_incr_(data.find("$SC_TOOL_OFFSET_INCR_PROG")) {}
 
 NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const ModalState& modal,
                                                 const Vec3& from) const {
@@ -61,17 +63,21 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   // Without a frame WCS = BCS: the products are skipped (the usual case).
   const bool plain = suppressed_ || frames_.isIdentity();
   // Programming system: the WCS, or the BCS when frames are suppressed (G53/G153/SUPA).
-  const Vec3 from = suppressed_ ? bcs_ : wcs_;
-  Vec3 to = target(w, modal, from);
+  Vec3 from = suppressed_ ? bcs_ : wcs_;
   core::MotionBlock& m = m_;
+  // The block keeps its frame from the last motion while the frame state is the same (the
+  // usual case: no copy of the map per block).
+  const core::BlockFrame& block_frame = suppressed_ ? kNoFrame : frames_.blockFrame();
+  if (m.frame.state() != block_frame.state()) {
+    if (!suppressed_ && modal.motion != Motion::G2 && modal.motion != Motion::G3)
+      from = startAfterFrameChange(w, modal);
+    m.frame = block_frame;
+  }
+  Vec3 to = target(w, modal, from);
   m.motion = modal.motion;
   // A SAR block is a linear block: its own G0/G1 (G2/G3 modal count as G1) moves P2 -> P0.
   const bool sar = w.sar != core::SarKind::None;
   if (sar && (m.motion == Motion::G2 || m.motion == Motion::G3)) m.motion = Motion::G1;
-  // The block keeps its frame from the last motion while the frame state is the same (the
-  // usual case: no copy of the map per block).
-  const core::BlockFrame& block_frame = suppressed_ ? kNoFrame : frames_.blockFrame();
-  if (m.frame.state() != block_frame.state()) m.frame = block_frame;
   m.line = at.line;
   m.file = at.file;
   m.start = suppressed_ ? bcs_ : frames_.toWcs(bcs_);
@@ -186,18 +192,48 @@ NCOFFSET_INLINE_STEP bool MotionBuilder::takeUpLength(const BlockWords& w, const
   // moves it after the selection (W1 2.1, spec §2.6).
   const Vec3 full = tools_.lengthVector(modal.plane);
   const Vec3 before = applied_offset_;
+  // SD42442 = 0: an incrementally programmed axis does not take up a changed length (only the
+  // programmed path is traversed); asked only where the length changed.
   if (plain) {
     for (int i = 0; i < 3; ++i)
-      if (w.axis[i]) applied_offset_[i] = full[i];
+      if (w.axis[i] && applied_offset_[i] != full[i] && takesUpLength(w, modal, i))
+        applied_offset_[i] = full[i];
   } else {
     const Mat3& l = frame().linear;
     for (int k = 0; k < 3; ++k)
       for (int i = 0; i < 3; ++i)
-        if (w.axis[i] && std::fabs(l.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12)
+        if (w.axis[i] && std::fabs(l.m[static_cast<size_t>(k)][static_cast<size_t>(i)]) > 1e-12 &&
+            applied_offset_[k] != full[k] && takesUpLength(w, modal, i))
           applied_offset_[k] = full[k];
   }
   const Vec3 moved = (toBcs(plain, target) + applied_offset_) - (bcs_ + before);
   return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
+}
+
+bool MotionBuilder::incremental(const BlockWords& w, const ModalState& modal, int axis) {
+  const AxisMode mode = w.axis_mode[axis];
+  return mode == AxisMode::IC || mode == AxisMode::DIC || mode == AxisMode::RIC ||
+         (mode == AxisMode::Default && modal.incremental);
+}
+
+bool MotionBuilder::takesUpLength(const BlockWords& w, const ModalState& modal, int axis) const {
+  // W1 "tool length compensation" / SD42442 TOOL_OFFSET_INCR_PROG: 1 (default) a changed tool
+  // length is traversed also when the axis is programmed incrementally; 0 only the programmed
+  // increment is traversed, the length is taken up by the next absolute programming.
+  return data_.get(sd_tool_incr_) != 0 || !incremental(w, modal, axis);
+}
+
+Vec3 MotionBuilder::startAfterFrameChange(const BlockWords& w, const ModalState& modal) const {
+  // K2 "Frames with G91" (FM K2 08/2005 1.3), SD42440 FRAME_OFFSET_INCR_PROG: an axis programmed
+  // incrementally after a frame change counts from its last programmed WCS value (1, default:
+  // the offset change is traversed with the increment) or from where the new frame sees the tool
+  // (0: only the programmed path). docs/frames.md.
+  Vec3 from = wcs_;
+  if (data_.get(sd_frame_incr_) != 0) return from;
+  const Vec3 actual = frames_.toWcs(bcs_);
+  for (int i = 0; i < 3; ++i)
+    if (w.axis[i] && incremental(w, modal, i)) from[i] = actual[i];
+  return from;
 }
 
 NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& modal) {

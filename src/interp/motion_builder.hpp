@@ -71,6 +71,13 @@ class MotionBuilder {
   // when the block moves nowhere.
   bool takeUpLength(const BlockWords& w, const ModalState& modal, bool plain, const Vec3& target);
   void compensationSettings(const ModalState& modal);
+  // The axis is programmed incrementally in this block (G91, IC, DIC, RIC).
+  static bool incremental(const BlockWords& w, const ModalState& modal, int axis);
+  // SD42442: whether the programmed axis takes up a changed tool length in this block.
+  bool takesUpLength(const BlockWords& w, const ModalState& modal, int axis) const;
+  // The point a linear block's axes count from after a frame change (SD42440 for incremental
+  // axes, K2; the other axes from the last programmed point, docs/frames.md).
+  Vec3 startAfterFrameChange(const BlockWords& w, const ModalState& modal) const;
   // The edge's P - S under the block's frame (turning tools only).
   Vec3 tipVector(Plane plane);
   void checkRange(bool plain) const;
@@ -89,7 +96,7 @@ class MotionBuilder {
   const tool::ToolSelection& tools_;
   // Machine data read per block, looked up once.
   int md_circle_const_, md_circle_factor_, md_corner_limit_, md_insert_limit_, md_dummy_blocks_,
-      md_check_blocks_, md_sar_dummy_blocks_;
+      md_check_blocks_, md_sar_dummy_blocks_, sd_frame_incr_, sd_tool_incr_;
   core::MotionBlock m_;             // the one block, reused: every member is set for each motion
   bool suppressed_ = false;         // G53/G153/SUPA in the block being built
   Vec3 applied_offset_;             // BCS length vector as taken up axis by axis by linear blocks

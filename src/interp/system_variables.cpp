@@ -103,6 +103,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   if (name.empty() || name[0] != '$') return false;
   if (tools_.read(name, idx, indexed, modal_.plane, out)) return true;
   if (readCarrier(name, idx, indexed, out)) return true;
+  if (offsetWordRead(name, idx, indexed, out)) return true;
   if (readState(name, idx, indexed, out)) return true;
   if (name == "$P_APR" || name == "$P_AEP") {
     // Smooth approach (W1 2.4.4.4): P3 and P4 of the last evaluated approach, WCS.
@@ -167,6 +168,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     }
     if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
     data_.set(id, lang::toNumber(v, "machine/setting data"));
+    if (data_.spec(id).number == 18110 || data_.spec(id).number == 18112) syncSumOffsetLimits();
     if (data_.spec(id).number == 28050) {  // MD28050 MM_NUM_R_PARAM: number of R parameters
       vars_.resizeR(static_cast<size_t>(data_.get(id)));
     }
@@ -185,7 +187,8 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
   bool whole;
   Frame* f = frameByName(name, idx, indexed, whole);
   if (!f) {
-    if (predefinedAssign(name, v)) return;  // docs/names.md: ADIS=, ACC[X]=, DL=0, ...
+    if (offsetWordWrite(name, idx, indexed, v)) return;  // DL=, TOFFL=, TOFF[ax]=, TOFFR=
+    if (predefinedAssign(name, v)) return;               // docs/names.md: ADIS=, ACC[X]=, DL=0, ...
     if (!name.empty() && name[0] == '$')
       raise(AlarmNumber::NameNotDefined,
             fmt::format("name {} not defined or option/function not available", name));

@@ -1,7 +1,7 @@
 // The predefined functions of the D-number management and the tool environments (W1 2.1.5,
 // 2.10; PM Job planning "Free assignment of D numbers", "Tool environments"): their
 // parameters, VAR results and status values. The offset memory does the work
-// (src/tool/d_numbers.cpp, src/tool/tool_environment.cpp); docs/tool-offsets.md sections 10-11.
+// (src/tool/d_numbers.cpp, src/tool/tool_environment.cpp); docs/tool-offsets.md sections 13-14.
 #include <fmt/format.h>
 
 #include <cmath>

@@ -10,23 +10,10 @@ namespace ncoffset::interp {
 using lang::Type;
 using lang::Value;
 
-tool::SelectionContext Interpreter::selectionContext() const {
-  tool::SelectionContext ctx;
-  ctx.settings.mirror_length = data_.get(sd_mirror_length_) != 0;
-  ctx.settings.mirror_wear = data_.get(sd_mirror_wear_) != 0;
-  ctx.settings.wear_sign_cutpos = data_.get(sd_cutpos_) != 0;
-  ctx.settings.wear_sign = data_.get(sd_wear_sign_) != 0;
-  ctx.settings.length_const = static_cast<long>(data_.get(sd_length_const_));
-  ctx.settings.length_type = static_cast<long>(data_.get(sd_length_type_));
-  ctx.default_edge = static_cast<int>(data_.get(md_default_edge_));
-  ctx.mirrored = frames_.active().mirror;
-  return ctx;
-}
-
 void Interpreter::executeToolWords() {
-  if (!words_.tool && !words_.edge && !words_.tool_change) return;  // the usual block
-  tools_.execute({words_.tool, words_.edge, words_.tool_change}, data_.get(md_change_mode_) == 0,
-                 selectionContext());
+  if (!words_.tool && !words_.edge && !words_.tool_change && !words_.sum_offset) return;
+  tools_.execute({words_.tool, words_.edge, words_.tool_change, words_.sum_offset},
+                 data_.get(md_change_mode_) == 0, selectionContext());
   if (events_) toolEvent();
 }
 

@@ -1,6 +1,7 @@
 #include "out/vars_json.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <ostream>
 
@@ -87,6 +88,12 @@ void writeVariablesJson(std::ostream& out, const VariablesReport& report) {
   for (size_t k = 0; k < t.active_offset.size(); ++k)
     out << (k ? "," : "") << fmt::format("{}", t.active_offset[k] + 0.0);
   out << fmt::format("], \"$P_TOOLENVN\": {}", t.environments);
+  const OffsetReadout& s = report.offsets;
+  out << fmt::format(
+      ", \"DL\": {}, \"$SUM_OFFSET\": [{}], \"$SETUP_OFFSET\": [{}], \"$P_TOFFL\": [{}], "
+      "\"$P_TOFF\": [{},{},{}], \"$P_TOFFR\": {}",
+      s.dl, fmt::join(s.sum, ","), fmt::join(s.setup, ","), fmt::join(s.toffl, ","), s.toff.x,
+      s.toff.y, s.toff.z, s.toffr);
   // Smooth approach: P3 and P4 of the last evaluated approach (WCS), $P_APDV.
   const Vec3 apr = report.approach.apr, aep = report.approach.aep;
   out << fmt::format(", \"$P_APR\": [{},{},{}], \"$P_AEP\": [{},{},{}], \"$P_APDV\": {}",

@@ -29,9 +29,21 @@ struct ToolReadout {
   int environments = 0;                    // $P_TOOLENVN
 };
 
+// The active sum/setup offset DL with its values (L1, L2, L3, radius: $TC_SCPx3..x6 and
+// $TC_ECPx3..x6) and the programmed offsets TOFFL[0..3], TOFF[X,Y,Z], TOFFR
+// (docs/tool-offsets.md sections 10, 11).
+struct OffsetReadout {
+  int dl = 0;
+  std::array<double, 4> sum{}, setup{};
+  std::array<double, 4> toffl{};
+  Vec3 toff;
+  double toffr = 0;
+};
+
 struct VariablesReport {
   std::vector<std::pair<std::size_t, double>> r;  // R number and value, ascending
   ToolReadout tool;
+  OffsetReadout offsets;
   core::ApproachPoints approach;                                 // $P_APR, $P_AEP, $P_APDV
   std::map<std::string, const interp::UserVariable*> variables;  // sorted by name
 };

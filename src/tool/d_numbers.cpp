@@ -1,7 +1,7 @@
 // D-number management of the TO unit (W1 2.1.5 "Free assignment of D numbers", 2.2 "Flat D
 // number structure"; PM Job planning "Free assignment of D numbers, cutting edge numbers"):
 // MD18105/MD18106 limits, the cutting edge number CE ($TC_DPCE), CHKDNO, GETDNO, SETDNO, DZERO,
-// GETACTTD, GETACTT and $P_AD. docs/tool-offsets.md section 10 explains the decisions.
+// GETACTTD, GETACTT and $P_AD. docs/tool-offsets.md section 13 explains the decisions.
 #include <fmt/format.h>
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // Operator's Guide "Tool data: grinding"): the tool-specific grinding data $TC_TPG1..9.
 // Only the chaining rule $TC_TPG2 changes an offset; the monitoring data only set PLC signals
 // or limit the spindle speed (W4 17.4: "No error reaction is initiated internally in the
-// control system"): stored and readable, path-neutral (docs/tool-offsets.md section 12).
+// control system"): stored and readable, path-neutral (docs/tool-offsets.md section 15).
 #include <fmt/format.h>
 
 #include <cmath>

@@ -55,7 +55,7 @@ int parseComponents(const std::string& text, Components& c) {
 }
 
 // The edge with only the components asked for: the others zeroed. Sum and setup offsets are
-// not in the offset memory of this build (docs/tool-offsets.md section 11).
+// not in the offset memory of this build (docs/tool-offsets.md section 14).
 EdgeData selectComponents(const EdgeData& e, const Components& c) {
   EdgeData out = e;
   for (size_t k = 0; k < 3; ++k) {

@@ -38,6 +38,7 @@ void ToolSelection::execute(const ToolWords& w, bool change_on_t, const Selectio
     preselected_tool_ = -1;
   }
   if (w.edge) selectEdge(*w.edge, ctx);
+  if (w.sum_offset) selectSumOffset(*w.sum_offset, ctx);
 }
 
 void ToolSelection::changeTool(int t, bool edge_programmed, const SelectionContext& ctx) {
@@ -55,6 +56,7 @@ void ToolSelection::changeTool(int t, bool edge_programmed, const SelectionConte
 void ToolSelection::selectEdge(int d, const SelectionContext& ctx) {
   if (d == 0) {
     active_edge_ = 0;
+    active_dl_ = 0;  // D0 (and T0) switch the sum offset off too (W1 18.11)
     edge_ = EdgeSnapshot{};
     return;
   }
@@ -65,11 +67,23 @@ void ToolSelection::selectEdge(int d, const SelectionContext& ctx) {
     edgeMissing(active_tool_, d);
   }
   active_edge_ = d;
+  // MD20272: the DL a D selection brings (0 none, -1 the DL number before).
+  if (ctx.default_sum_offset >= 0) active_dl_ = ctx.default_sum_offset;
+  snapshot(*e, ctx);
+}
+
+void ToolSelection::snapshot(const EdgeData& e, const SelectionContext& ctx) {
   edge_.valid = true;
-  edge_.data = *e;
+  edge_.data = e;
+  if (active_dl_ > 0)
+    addSumOffsets(edge_.data, sums_, active_tool_, active_edge_, active_dl_, sum_limits_);
   edge_.settings = ctx.settings;
   edge_.mirrored = ctx.mirrored;
-  edge_.radius = effectiveLengths(edge_.data, edge_.settings).radius;
+  refreshRadius();
+}
+
+void ToolSelection::refreshRadius() {
+  edge_.radius = effectiveLengths(edge_.data, edge_.settings).radius + programmed_.radius;
   const int sl = edge_.data.cuttingEdgePosition();
   edge_.has_tip =
       isTurningOrGrindingType(edge_.data.type()) && sl >= 1 && sl <= 8 && edge_.radius != 0.0;
@@ -77,7 +91,9 @@ void ToolSelection::selectEdge(int d, const SelectionContext& ctx) {
 }
 
 void ToolSelection::cache(Plane plane) const {
-  edge_.cached_offset = ncoffset::lengthVector(edge_.data, edge_.settings, plane, edge_.mirrored);
+  edge_.cached_offset =
+      ncoffset::lengthVector(edge_.data, edge_.settings, plane, edge_.mirrored) +
+      programmedVector(programmed_, edge_.data.type(), edge_.settings, plane, edge_.mirrored);
   edge_.cached_tip = ncoffset::tipVector(edge_.data, edge_.settings, plane, edge_.radius);
   edge_.cached_plane = plane;
   edge_.offset_cached = true;
@@ -100,8 +116,16 @@ Vec3 ToolSelection::tipVector(Plane plane) const {
   return edge_.cached_tip;
 }
 
-EffectiveLengths ToolSelection::lengths() const {
-  return edge_.valid ? effectiveLengths(edge_.data, edge_.settings) : EffectiveLengths{};
+EffectiveLengths ToolSelection::lengths(Plane plane) const {
+  if (!edge_.valid) return {};
+  // $P_TOOLL/$P_TOOLR: the edge with its DL (in the snapshot) and the programmed offsets.
+  EffectiveLengths l = effectiveLengths(edge_.data, edge_.settings);
+  const LengthAssignment a = assignLengths(edge_.data.type(), plane, edge_.settings.length_const,
+                                           edge_.settings.length_type);
+  const std::array<double, 3> c = programmedComponents(programmed_, a);
+  for (size_t k = 0; k < 3; ++k) l.total[k] += c[k];
+  l.radius = edge_.radius;
+  return l;
 }
 
 Vec3 ToolSelection::orientation(Plane plane) const {

@@ -15,6 +15,8 @@
 
 #include "lang/value.hpp"
 #include "ncoffset/tool.hpp"
+#include "tool/programmable_offsets.hpp"
+#include "tool/sum_offsets.hpp"
 #include "tool/tool_store.hpp"
 
 namespace ncoffset::tool {
@@ -25,13 +27,15 @@ struct SelectionContext {
   ToolSettings settings;
   int default_edge = 1;  // MD20270: 0 no edge, > 0 that edge, -1 keep the old D number
   std::array<bool, 3> mirrored{false, false, false};
+  int default_sum_offset = 0;  // MD20272: 0 none, > 0 that DL, -1 keep the DL number
 };
 
 // The tool words of one block.
 struct ToolWords {
-  std::optional<int> tool;   // T
-  std::optional<int> edge;   // D
-  bool tool_change = false;  // M6 (MD22560) for the master spindle
+  std::optional<int> tool;          // T
+  std::optional<int> edge;          // D
+  bool tool_change = false;         // M6 (MD22560) for the master spindle
+  std::optional<int> sum_offset{};  // DL= (sum_offsets.cpp)
 };
 
 // The D number structure (W1 "Free assignment of D numbers", "Flat D number structure"):
@@ -94,6 +98,14 @@ class ToolSelection {
   // The offset memory as it is now (the HTML report's tool table).
   const ToolStore& store() const { return tools_; }
   int activeEdge() const { return active_edge_; }
+  // The active sum/setup offset number DL (0: none) and what it adds (sum_offsets.cpp).
+  int activeSumOffset() const { return active_dl_; }
+  const SumOffsetMemory& sumOffsets() const { return sums_; }
+  void setSumOffsetLimits(const SumOffsetLimits& l) { sum_limits_ = l; }
+  // TOFFL, TOFF, TOFFR (programmable_offsets.cpp): they act at once on the active edge and stay
+  // over a tool change.
+  const ProgrammedOffsets& programmed() const { return programmed_; }
+  void setProgrammed(const ProgrammedOffsets& p);
   bool hasEdge() const { return edge_.valid; }
   // The compensation radius of the active edge (edge + wear), 0 without an edge.
   double radius() const { return edge_.valid ? edge_.radius : 0.0; }
@@ -114,7 +126,8 @@ class ToolSelection {
   Vec3 tipVector(Plane plane) const;
   bool hasTip() const { return edge_.has_tip; }
   // $P_TOOLL / $P_TOOLR: the effective lengths (zero without an edge).
-  EffectiveLengths lengths() const;
+  // (`plane`: where TOFF[axis] acts, docs/tool-offsets.md section 11.)
+  EffectiveLengths lengths(Plane plane = Plane::G17) const;
   // $P_TOOLO: the unit orientation (without an edge the plane's applicate).
   Vec3 orientation(Plane plane) const;
 
@@ -141,6 +154,16 @@ class ToolSelection {
  private:
   void changeTool(int t, bool edge_programmed, const SelectionContext& ctx);
   void selectEdge(int d, const SelectionContext& ctx);
+  // DL=n after the block's T/D (W1 18.11: like a D selection); alarm 17182 for a bad DL.
+  void selectSumOffset(int dl, const SelectionContext& ctx);
+  // Takes the active edge's data (with its DL) and the setting data into the snapshot.
+  void snapshot(const EdgeData& e, const SelectionContext& ctx);
+  // The radius (edge, wear, DL, TOFFR) and what depends on it, after a change.
+  void refreshRadius();
+  bool readSumOffset(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                     lang::Value& out) const;
+  bool writeSumOffset(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                      const lang::Value& v);
   // Recomputes the cached length and tip vectors for `plane` (the plane changed).
   void cache(Plane plane) const;
   bool cachedFor(Plane plane) const { return edge_.offset_cached && edge_.cached_plane == plane; }
@@ -172,6 +195,10 @@ class ToolSelection {
   bool carrier_ = false;  // a toolholder is active (TCARR=m, m > 0)
   Mat3 carrier_rotation_;
   Vec3 carrier_offset_;
+  SumOffsetMemory sums_;
+  SumOffsetLimits sum_limits_;
+  int active_dl_ = 0;
+  ProgrammedOffsets programmed_;
   struct EdgeSnapshot {
     bool valid = false;
     EdgeData data;

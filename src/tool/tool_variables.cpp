@@ -8,6 +8,7 @@
 
 #include "lang/evaluator.hpp"
 #include "ncoffset/alarm.hpp"
+#include "tool/tool_index.hpp"
 #include "tool/tool_selection.hpp"
 
 namespace ncoffset::tool {
@@ -19,13 +20,6 @@ namespace {
 
 [[noreturn]] void edgeMissing(int t, int d) {
   raise(AlarmNumber::EdgeNotExisting, fmt::format("T no. = {}, D no. = {} not existing", t, d));
-}
-
-int wholeIndex(const Value& v, int lo, int hi, AlarmNumber alarm, const char* what) {
-  double x = lang::toNumber(v, what);
-  if (x != std::floor(x) || x < lo || x > hi)
-    raise(alarm, fmt::format("illegal array index: {} {} outside {}..{}", what, x, lo, hi));
-  return static_cast<int>(x);
 }
 
 // "$TC_DP12" -> kind "DP", number 12; "$TC_DPV3" -> "DPV", 3; "$TC_DPV" -> "DPV", 0.
@@ -86,6 +80,20 @@ bool parseToolVariable(std::string_view name, std::span<const Value> idx, bool i
 
 }  // namespace
 
+int wholeIndex(const Value& v, int lo, int hi, AlarmNumber alarm, const char* what) {
+  double x = lang::toNumber(v, what);
+  if (x != std::floor(x) || x < lo || x > hi)
+    raise(alarm, fmt::format("illegal array index: {} {} outside {}..{}", what, x, lo, hi));
+  return static_cast<int>(x);
+}
+
+void edgeIndex(std::string_view name, std::span<const Value> idx, bool indexed, int& t, int& d) {
+  if (!indexed || idx.size() != 2)
+    raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [T,D]", name));
+  t = wholeIndex(idx[0], 1, kMaxTool, AlarmNumber::ArrayIndex1, "T");
+  d = wholeIndex(idx[1], 1, kMaxEdge, AlarmNumber::ArrayIndex2, "D");
+}
+
 bool ToolSelection::read(std::string_view name, std::span<const Value> idx, bool indexed,
                          Plane plane, Value& out) const {
   if (name == "$P_TOOLNO") {
@@ -109,7 +117,7 @@ bool ToolSelection::read(std::string_view name, std::span<const Value> idx, bool
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [1..3]", name));
     int k = wholeIndex(idx[0], 1, 3, AlarmNumber::ArrayIndex1, "index");
     if (name == "$P_TOOLL") {
-      out = Value::real(lengths().total[static_cast<size_t>(k - 1)]);
+      out = Value::real(lengths(plane).total[static_cast<size_t>(k - 1)]);
     } else {
       out = Value::real(orientation(plane)[k - 1]);
     }
@@ -117,6 +125,7 @@ bool ToolSelection::read(std::string_view name, std::span<const Value> idx, bool
   }
   if (readActiveOffset(name, idx, indexed, out) || readEnvironment(name, idx, indexed, out))
     return true;
+  if (readSumOffset(name, idx, indexed, out)) return true;  // $TC_SCP.., $TC_ECP..
   ToolVariable var;
   if (!parseToolVariable(name, idx, indexed, dconf_, var)) return false;
   const std::string_view kind = var.kind;
@@ -158,6 +167,7 @@ bool ToolSelection::write(std::string_view name, std::span<const Value> idx, boo
   if (name == "$P_TOOLNO" || name == "$P_TOOL" || name == "$P_TOOLP" || name == "$P_TOOLR" ||
       name == "$P_TOOLL" || name == "$P_TOOLO")
     raise(AlarmNumber::NameNotDefined, fmt::format("{} can only be read", name));
+  if (writeSumOffset(name, idx, indexed, v)) return true;  // $TC_SCP.., $TC_ECP..
   ToolVariable var;
   if (!parseToolVariable(name, idx, indexed, dconf_, var)) return false;
   const std::string_view kind = var.kind;

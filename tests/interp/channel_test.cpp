@@ -241,7 +241,9 @@ TEST(Channel, VariablesJson) {
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
             "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_AD\": "
             "[0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0], "
-            "\"$P_TOOLENVN\": 0, \"$P_APR\": [0,0,0], "
+            "\"$P_TOOLENVN\": 0, \"DL\": 0, "
+            "\"$SUM_OFFSET\": [0,0,0,0], \"$SETUP_OFFSET\": [0,0,0,0], \"$P_TOFFL\": [0,0,0,0], "
+            "\"$P_TOFF\": [0,0,0], \"$P_TOFFR\": 0, \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
             "\"A\": 0.1, \"FLAG\": true, "
             "\"K\": [1,2,3], \"ST\": \"a\\\\b\"}\n");
@@ -271,7 +273,9 @@ TEST(Channel, VariablesJsonTwoDimensionsAndNoR) {
             "\"$P_TOOLNO\": 0, \"$P_TOOL\": 0, \"$P_TOOLL\": [0,0,0], \"$P_TOOLR\": 0, "
             "\"$P_TOOLO\": [0,0,1], \"$TOOL_LENGTH_BCS\": [0,0,0], \"$P_AD\": "
             "[0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0], "
-            "\"$P_TOOLENVN\": 0, \"$P_APR\": [0,0,0], "
+            "\"$P_TOOLENVN\": 0, \"DL\": 0, "
+            "\"$SUM_OFFSET\": [0,0,0,0], \"$SETUP_OFFSET\": [0,0,0,0], \"$P_TOFFL\": [0,0,0,0], "
+            "\"$P_TOFF\": [0,0,0], \"$P_TOFFR\": 0, \"$P_APR\": [0,0,0], "
             "\"$P_AEP\": [0,0,0], \"$P_APDV\": 0, "
             "\"MM\": [[1,2],[3,4.5]]}\n");
 }

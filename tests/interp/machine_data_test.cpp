@@ -84,6 +84,9 @@ TEST(MachineData, DefaultsOfSpecSection10) {
       {"MD22560", 6},      // TOOL_CHANGE_M_CODE
       {"MD28050", 100},    // R0..R99
       {"SD42440", 1},      // FRAME_OFFSET_INCR_PROG
+      {"SD42442", 1},      // TOOL_OFFSET_INCR_PROG
+      {"MD18110", 6},      // MM_MAX_SUMCORR_PER_CUTTEDGE (ncoffset's default)
+      {"MD20272", 0},      // SUMCORR_DEFAULT: no DL with a D selection
       {"SD42900", 0},     {"SD42910", 0}, {"SD42920", 0},
       {"SD42930", 0},     {"SD42940", 0}, {"SD42950", 0},
   };

@@ -16,10 +16,13 @@ TEST(PredefinedNames, FindsExactNamesAndFamilies) {
   const PredefinedName* soft_a = findPredefinedName("SOFTA");
   ASSERT_NE(soft_a, nullptr);
   EXPECT_EQ(soft_a->cls, NameClass::NoPathEffect);
-  const PredefinedName* toffl = findPredefinedName("TOFFL");
+  const PredefinedName* tcarr = findPredefinedName("TCARR");
+  ASSERT_NE(tcarr, nullptr);
+  EXPECT_EQ(tcarr->cls, NameClass::NotModelled);
+  EXPECT_TRUE(tcarr->zero_accepted);
+  const PredefinedName* toffl = findPredefinedName("TOFFL");  // a reserved name with code
   ASSERT_NE(toffl, nullptr);
-  EXPECT_EQ(toffl->cls, NameClass::NotModelled);
-  EXPECT_TRUE(toffl->zero_accepted);
+  EXPECT_EQ(toffl->cls, NameClass::Modelled);
   const PredefinedName* scp = findPredefinedName("$TC_SCP13");
   ASSERT_NE(scp, nullptr);
   EXPECT_EQ(scp->name, "$TC_SCP");
