@@ -38,7 +38,7 @@ HtmlReport::HtmlReport(std::FILE* f, View view, std::string program, std::string
 void HtmlReport::segment(const Segment& s) {
   if (finished_) return;
   svg_.segment(s);
-  long long n = counts_[0] + counts_[1] + counts_[2] + counts_[3];
+  long long n = total_++;
   ++counts_[static_cast<size_t>(s.motion)];
   (s.has_feed ? cut_length_ : rapid_length_) += segmentLength(s);  // rapid: no feed (path.hpp)
   box_.add(s);
@@ -88,7 +88,7 @@ void HtmlReport::finish(const Alarm* alarm) {
   w_.flush();  // the drawing is written by the SVG writer into the same file
   svg_.finish(alarm);
   append(b, "</div>\n<h2>Segments</h2>\n");
-  long long total = counts_[0] + counts_[1] + counts_[2] + counts_[3];
+  long long total = total_;
   if (total == 0) {
     append(b, "<p>No segment.</p>\n");
   } else {
@@ -122,9 +122,13 @@ void HtmlReport::writeSummary(const Alarm* alarm) {
     append(b, ">ran to the end");
   }
   append(b, "</td></tr>\n");
-  long long total = counts_[0] + counts_[1] + counts_[2] + counts_[3];
-  fmt::format_to(it, "<tr><th>segments</th><td>{} (G0 {}, G1 {}, G2 {}, G3 {})</td></tr>\n", total,
-                 counts_[0], counts_[1], counts_[2], counts_[3]);
+  long long total = total_;
+  fmt::format_to(it, "<tr><th>segments</th><td>{} (G0 {}, G1 {}, G2 {}, G3 {}", total, counts_[0],
+                 counts_[1], counts_[2], counts_[3]);
+  for (size_t k = 4; k < counts_.size(); ++k)  // thread and tapping lines, where there are any
+    if (counts_[k] > 0)
+      fmt::format_to(it, ", {} {}", motionName(static_cast<Motion>(k)), counts_[k]);
+  append(b, ")</td></tr>\n");
   fmt::format_to(it,
                  "<tr><th>path length rapid (G0)</th><td class=\"n\">{:.3f} mm</td></tr>\n"
                  "<tr><th>path length at feed</th><td class=\"n\">{:.3f} mm</td></tr>\n",

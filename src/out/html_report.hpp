@@ -44,7 +44,8 @@ class HtmlReport final : public PathSink {
   std::string program_, coords_;
   int decimals_;
   bool finished_ = false;
-  std::array<long long, 4> counts_{};  // per Motion
+  std::array<long long, 10> counts_{};  // per Motion
+  long long total_ = 0;
   double rapid_length_ = 0, cut_length_ = 0;
   Box box_;
   fmt::memory_buffer rows_;  // table rows of the first kMaxRows segments
