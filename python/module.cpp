@@ -25,7 +25,7 @@ namespace {
 
 // One row of the segments array (field names in docs/python.md).
 struct Row {
-  int32_t line, file, motion;  // motion: the G number 0..3
+  int32_t line, file, motion;  // motion: the G number (0..3, 33, 34, 35, 331, 332, 63)
   double sx, sy, sz, x, y, z, cx, cy, cz, nx, ny, nz;
   int32_t turns;
   double feed;
@@ -50,7 +50,7 @@ class Collector final : public PathSink {
   bool finished = false;
 
   void segment(const Segment& s) override {
-    rows.push_back({s.line, s.file, static_cast<int32_t>(s.motion), s.start.x, s.start.y, s.start.z,
+    rows.push_back({s.line, s.file, motionGNumber(s.motion), s.start.x, s.start.y, s.start.z,
                     s.end.x, s.end.y, s.end.z, s.centre.x, s.centre.y, s.centre.z, s.normal.x,
                     s.normal.y, s.normal.z, s.turns, s.feed, s.has_feed});
   }

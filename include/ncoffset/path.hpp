@@ -8,8 +8,17 @@
 
 namespace ncoffset {
 
-enum class Motion { G0, G1, G2, G3 };
+// G0..G3, and the thread and tapping motions (PM-NC "Thread cutting"; docs/threads.md): lines
+// whose feed is the thread lead in mm/rev (G33, G34, G35, G331, G332) or F (G63, tapping with
+// a compensating chuck).
+enum class Motion { G0, G1, G2, G3, G33, G34, G35, G331, G332, G63 };
 const char* motionName(Motion m);
+// The G number of the motion (0, 1, 2, 3, 33, 34, 35, 331, 332, 63).
+int motionGNumber(Motion m);
+// A thread or tapping motion (G33, G34, G35, G331, G332, G63): a straight line.
+inline bool isThreadMotion(Motion m) {
+  return m > Motion::G3;
+}
 
 // What a feed value means (G group 15, PM-NC "Feedrate"): mm/min (G94, G961, G971), mm per
 // spindle revolution (G95, G96, G97) or the inverse of the block's time in minutes (G93).
@@ -33,6 +42,8 @@ struct Segment {
   // compensation inserts before a G0 block: it moves with that block's data (PM-F 840Di 11/2006
   // p364), at rapid traverse.
   bool has_feed = false;
+  // G34/G35: the lead change F in mm/rev per revolution (feed holds the start lead); else 0.
+  double lead_change = 0;
 };
 
 // Events besides motion, for machine simulations (docs/architecture.md "Events"). Each carries

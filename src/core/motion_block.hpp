@@ -37,6 +37,7 @@ struct MotionBlock {
   double feed = 0;
   FeedUnit feed_unit = FeedUnit::MmPerMin;  // G group 15 of the block
   bool has_feed = false;
+  double lead_change = 0;  // G34/G35: F in mm/rev per revolution (feed: the start lead)
   int line = 0;
   int file = 0;
   // The number of the interpreter's motion in the run (1, 2, ...): what the stages make of it

@@ -60,9 +60,8 @@ void Interpreter::finishBlock() {
   bool circle_words = words_.centre[0] || words_.centre[1] || words_.centre[2] || words_.cr ||
                       words_.ar || words_.turn;
   bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
-  if (circle_words && !is_arc)
-    raise(AlarmNumber::CircleProgramming,
-          "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
+  if (circle_words && !is_arc) [[unlikely]]
+    threadLeadWords();  // I, J, K of a thread (threads.cpp); else the circle alarm
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   bool moved = false;
   bool builds =

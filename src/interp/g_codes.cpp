@@ -60,10 +60,11 @@ NCOFFSET_INLINE_STEP bool Interpreter::gMotionPlaneFrame(int g) {
     case 601:
     case 602:
     case 603:
-    case 63:
     case 290:
-      return true;  // exact stop / continuous path / tapping with compensating chuck: no path
-                    // change
+      return true;  // exact stop / continuous path: no path change
+    case 63:
+      words_.tapping_chuck = true;  // G63: the block's G1 line is a tapping line
+      return true;
     case 17:
     case 18:
     case 19: {
@@ -98,7 +99,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::gMotionPlaneFrame(int g) {
       words_.axial_offset = g;
       return true;
     default:
-      return false;
+      return threadMotionWord(g);  // G33, G34, G35, G331, G332 (threads.cpp)
   }
 }
 // Groups 7 (G40-G42), 17/18 (G450/G451), 43/44 (G140-G143, G340/G341), 48 (G460-G462) and the
@@ -230,12 +231,6 @@ NCOFFSET_INLINE_STEP bool Interpreter::gUnitsAndFeed(int g) {
 // G codes of the control that change the path and are not modelled (alarm 99010).
 void Interpreter::gNotModelled(int g) {
   switch (g) {
-    case 33:
-    case 34:
-    case 35:
-    case 331:
-    case 332:
-      notModelled(fmt::format("G{}", g), "thread cutting / tapping interpolation");
     case 74:
     case 75:
       notModelled(fmt::format("G{}", g), "reference point / fixed point approach");

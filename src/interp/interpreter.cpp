@@ -105,6 +105,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     line_ = line_pos_.line;
     line_text_ = text;
     column_ = 0;
+    if (lvl.report_file >= 0) [[unlikely]] {  // a built-in cycle: the calling block's line
+      file_ = lvl.report_file;
+      line_ = lvl.report_line;
+      line_text_ = lvl.report_text;
+    }
     if (!more) {
       // End of file: a subprogram returns, the main program (or init file) ends.
       if (flow_.depth() > 1) {

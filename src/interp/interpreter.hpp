@@ -166,6 +166,10 @@ class Interpreter final : public lang::Environment {
   bool diameterAxisCall(std::string_view name, std::span<const lang::Value> args);
   bool diameterPermitted(int axis) const;
   void setDiameterMode(DiamMode m, std::string_view word);
+  // I, J, K in a block without G2/G3: the lead of a thread block (threads.cpp), else 14045.
+  void threadLeadWords();
+  // G33, G34, G35, G331, G332 (group 1): the modal motion; false for another G number.
+  bool threadMotionWord(int g);
   void updateDiameter();
   void resetDiameterAxes();
   double readPosition(double radius_value, int ax) const;

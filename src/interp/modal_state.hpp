@@ -50,6 +50,7 @@ struct ModalState {
   bool diam_permitted[3] = {false, false, false};  // the MD20100 axis or MD30460 bit 2
   int exact_stop = 64;                             // group 10: G60/G64/G641..
   double feed = 0;                                 // F in mm/min (G94) as the control holds it
+  Vec3 thread_lead;  // the last lead I, J, K of a G33..G332 block, mm/rev (docs/threads.md)
   double disc = 0;                                 // DISC=
   double offn = 0;                                 // OFFN=
   bool cut2d_frame = false;         // group 22: CUT2DF, CUT2DFD (docs/radius-compensation.md)
@@ -73,6 +74,7 @@ struct BlockWords {
   std::optional<int> turn;
   bool motion_word = false;        // G0..G3 in this block
   bool dwell = false;              // G4
+  bool tapping_chuck = false;      // G63 (group 2, this block only)
   int suppress_frames = 0;         // 53, 153 or 1 (SUPA)
   bool frame_select = false;       // G500/G54.. in this block
   int axial_offset = 0;            // 58 / 59

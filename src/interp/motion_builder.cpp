@@ -83,10 +83,13 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   m.start = suppressed_ ? bcs_ : frames_.toWcs(bcs_);
   m.end = to;
   m.has_feed = m.motion != Motion::G0;
-  if (m.has_feed && modal.feed <= 0)
+  if (m.has_feed && modal.feed <= 0 && !isThreadMotion(m.motion))
     raise(AlarmNumber::FeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
   m.feed = m.has_feed ? modal.feed : 0;
   m.feed_unit = modal.feed_unit;
+  m.lead_change = 0;
+  if (isThreadMotion(m.motion) | w.tapping_chuck) [[unlikely]]
+    threadFeed(w, modal, from, to);  // threads.cpp
   m.sar.kind = core::SarKind::None;
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     arc(w, modal, from, plain, to);

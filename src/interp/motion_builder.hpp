@@ -69,6 +69,8 @@ class MotionBuilder {
            Vec3& target);
   // G0/G1: the tool length taken up by each axis the block moves (W1 2.1, spec §2.6). False
   // when the block moves nowhere.
+  // A thread or tapping line (threads.cpp): its feed is the lead; G63 names the block's G1.
+  void threadFeed(const BlockWords& w, const ModalState& modal, const Vec3& from, const Vec3& to);
   bool takeUpLength(const BlockWords& w, const ModalState& modal, bool plain, const Vec3& target);
   void compensationSettings(const ModalState& modal);
   // The axis is programmed incrementally in this block (G91, IC, DIC, RIC).

@@ -65,6 +65,9 @@ bool Interpreter::predefinedCall(std::string_view name, std::span<const Value> a
     return true;
   }
   if (name == "SETAL") setAlarm(args);
+  if (name == "_NCO_NOT_MODELLED" && args.size() == 1 && args[0].isText())  // built-in cycles
+    raise(AlarmNumber::NotModelled,
+          fmt::format("{} of this standard cycle: not modelled by ncoffset", args[0].str));
   const PredefinedName* p = findPredefinedName(name);
   if (!p || (p->cycle && programExists(name))) return false;
   if (p->cls == NameClass::NotModelled) notModelledName(*p, name);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "cycles/builtin_cycles.hpp"
 #include "lang/parser.hpp"
 #include "ncoffset/alarm.hpp"
 
@@ -61,6 +62,7 @@ LoadedProgram* ProgramFlow::find(std::string_view name) {
   if (!prog) prog = findIn(search_dir_, key);
   for (size_t k = 0; !prog && k < search_path_.size(); ++k) prog = findIn(search_path_[k], key);
   if (!prog) prog = findInFedArchive(key);
+  if (!prog) prog = findBuiltin(key);
   if (!prog) return nullptr;
   indexed(*prog);  // every caller gets a program it can run
   by_name_.emplace(key, prog);
@@ -86,6 +88,17 @@ LoadedProgram* ProgramFlow::findInFedArchive(const std::string& key) {
   }
   auto it = main_archive_.find(key);
   return it == main_archive_.end() ? nullptr : it->second;
+}
+
+// The user's program of a cycle's name comes first (found above), as a cycle file in the
+// control's user cycle directory replaces the standard one (docs/cycles.md).
+LoadedProgram* ProgramFlow::findBuiltin(const std::string& key) {
+  const std::string_view text = cycles::builtinCycleText(key);
+  if (text.empty()) return nullptr;
+  auto source = lang::SourceFile::fromString(key + ".SPF (built-in)", std::string(text));
+  LoadedProgram& prog = loadRange(std::move(source), {}, kNoOffset);
+  prog.builtin = true;
+  return &prog;
 }
 
 // One place of the search: a directory, or a text archive holding several programs.

@@ -30,6 +30,9 @@ struct LoadedProgram {
   size_t end = kNoOffset;
   std::unique_ptr<lang::ProgramIndex> index;
   int file_id = 0;
+  // A standard cycle built into ncoffset (src/cycles/, docs/cycles.md): its blocks report the
+  // line of the block that called it.
+  bool builtin = false;
   // Positions of block numbers used as jump targets, found on demand (N number -> lines).
   std::unordered_map<long long, std::vector<lang::TextPos>> block_numbers;
 };
@@ -57,6 +60,11 @@ struct ProgramLevel {
   // of its own over the same program, without variables of its own.
   bool section = false;
   lang::TextPos section_start;
+  // A built-in cycle's level: the file, line and text of the calling block, which its blocks
+  // report (report_file -1: the level's own lines).
+  int report_file = -1;
+  int report_line = 0;
+  std::string_view report_text;
 };
 
 // A program section to repeat: its first line and the line it ends at.
@@ -172,6 +180,8 @@ class ProgramFlow {
   LoadedProgram* findInFedArchive(const std::string& key);
   const std::vector<lang::TextPos>& blockNumberLines(LoadedProgram& prog, long long n);
   LoadedProgram* findIn(const std::filesystem::path& dir, const std::string& key);
+  // A standard cycle built into ncoffset (src/cycles/builtin_cycles.hpp), searched last.
+  LoadedProgram* findBuiltin(const std::string& key);
   LoadedProgram& indexed(LoadedProgram& prog);
   LoadedProgram& loadRange(std::shared_ptr<lang::SourceFile> source, lang::TextPos begin,
                            size_t end);

@@ -221,6 +221,11 @@ void Interpreter::enterSubprogram(std::string_view name, long long repeat,
     if (flow_.fileCount() > files_before) file_ = static_cast<int>(flow_.fileCount()) - 1;
     throw;
   }
+  if (ProgramLevel& lvl = flow_.level(); lvl.program->builtin) {
+    lvl.report_file = file_;  // the caller's, already its caller's if it is built in too
+    lvl.report_line = line_;
+    lvl.report_text = line_text_;
+  }
   vars_.pushScope();
   CallFrame& f = call_frames_.emplace_back();
   f.modal = modal;

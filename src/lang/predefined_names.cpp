@@ -97,98 +97,117 @@ constexpr PredefinedName kNames[] = {
      "compensation of contour tools (W1 \"Contour tools\": several cutting edges "
      "D1..Dn of one tool describe its contour) is not modelled"},
     {"CYCLE60", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet"},
+     "a Siemens standard cycle: its program computes the path, ncoffset does not model it; a "
+     "CYCLE60.SPF on the search path runs instead"},
     {"CYCLE61", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (face milling)"},
+     "a Siemens standard cycle (face milling): its program computes the path, ncoffset does not "
+     "model it; a CYCLE61.SPF on the search path runs instead"},
     {"CYCLE62", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (contour call)"},
+     "a Siemens standard cycle (contour call): its program computes the path, ncoffset does not "
+     "model it; a CYCLE62.SPF on the search path runs instead"},
     {"CYCLE63", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (contour "
-     "pocket)"},
+     "a Siemens standard cycle (contour pocket): its program computes the path, ncoffset does not "
+     "model it; a CYCLE63.SPF on the search path runs instead"},
     {"CYCLE64", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (contour pocket "
-     "predrilling)"},
+     "a Siemens standard cycle (contour pocket predrilling): its program computes the path, "
+     "ncoffset does not model it; a CYCLE64.SPF on the search path runs instead"},
     {"CYCLE70", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (thread "
-     "milling)"},
+     "a Siemens standard cycle (thread milling): its program computes the path, ncoffset does not "
+     "model it; a CYCLE70.SPF on the search path runs instead"},
     {"CYCLE71", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (face milling)"},
+     "a Siemens standard cycle (face milling): its program computes the path, ncoffset does not "
+     "model it; a CYCLE71.SPF on the search path runs instead"},
     {"CYCLE72", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (path milling)"},
+     "a Siemens standard cycle (path milling): its program computes the path, ncoffset does not "
+     "model it; a CYCLE72.SPF on the search path runs instead"},
     {"CYCLE76", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (rectangular "
-     "spigot)"},
+     "a Siemens standard cycle (rectangular spigot): its program computes the path, ncoffset does "
+     "not model it; a CYCLE76.SPF on the search path runs instead"},
     {"CYCLE77", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (circular "
-     "spigot)"},
+     "a Siemens standard cycle (circular spigot): its program computes the path, ncoffset does not "
+     "model it; a CYCLE77.SPF on the search path runs instead"},
     {"CYCLE78", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (drill thread "
-     "milling)"},
+     "a Siemens standard cycle (drill thread milling): its program computes the path, ncoffset "
+     "does not model it; a CYCLE78.SPF on the search path runs instead"},
     {"CYCLE79", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (multi-edge)"},
+     "a Siemens standard cycle (multi-edge): its program computes the path, ncoffset does not "
+     "model it; a CYCLE79.SPF on the search path runs instead"},
     {"CYCLE800", NameClass::NotModelled, false, false, true,
-     "swivelling the working plane: changes frames and tool orientation; not modelled yet"},
-    {"CYCLE801", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (grid of "
-     "holes)"},
-    {"CYCLE802", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (arbitrary "
-     "positions)"},
-    {"CYCLE81", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (drilling, "
-     "centring)"},
-    {"CYCLE82", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (drilling, "
-     "counterboring)"},
-    {"CYCLE83", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (deep-hole "
-     "drilling)"},
+     "a Siemens standard cycle (swivelling the working plane: frames and tool orientation): "
+     "ncoffset does not model it; a CYCLE800.SPF on the search path runs instead"},
+    {"CYCLE801", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (grid of holes, docs/cycles.md)"},
+    {"CYCLE802", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (arbitrary positions, docs/cycles.md)"},
+    {"CYCLE81", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (drilling, centring, docs/cycles.md)"},
+    {"CYCLE82", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (drilling, counterboring (dwell at depth), "
+     "docs/cycles.md)"},
+    {"CYCLE83", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (deep-hole drilling (chip breaking, chip "
+     "removal), docs/cycles.md)"},
     {"CYCLE830", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (deep-hole "
-     "drilling 2)"},
+     "a Siemens standard cycle (deep-hole drilling 2): its program computes the path, ncoffset "
+     "does not model it; a CYCLE830.SPF on the search path runs instead"},
     {"CYCLE832", NameClass::NoPathEffect, false, false, true,
      "high-speed settings (tolerance, G642, COMPCAD, SOFT, FFWON): all of class (b)"},
-    {"CYCLE84", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (rigid "
-     "tapping)"},
-    {"CYCLE840", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (tapping with "
-     "compensating chuck)"},
-    {"CYCLE85", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (boring 1)"},
-    {"CYCLE86", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (boring 2)"},
-    {"CYCLE87", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (boring 3)"},
-    {"CYCLE88", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (boring 4)"},
-    {"CYCLE89", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (boring 5)"},
+    {"CYCLE84", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (rigid tapping (G331/G332), docs/cycles.md)"},
+    {"CYCLE840", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (tapping with compensating chuck (G33 or "
+     "G63), docs/cycles.md)"},
+    {"CYCLE85", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (boring 1 (feed out), docs/cycles.md)"},
+    {"CYCLE86", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (boring 2 (oriented stop, lift-off), "
+     "docs/cycles.md)"},
+    {"CYCLE87", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (boring 3 (stop M5 M0), docs/cycles.md)"},
+    {"CYCLE88", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (boring 4 (dwell, stop M5 M0), "
+     "docs/cycles.md)"},
+    {"CYCLE89", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (boring 5 (dwell, feed out), docs/cycles.md)"},
     {"CYCLE90", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (thread "
-     "milling)"},
+     "a Siemens standard cycle (thread milling): its program computes the path, ncoffset does not "
+     "model it; a CYCLE90.SPF on the search path runs instead"},
     {"CYCLE92", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (parting)"},
+     "a Siemens standard cycle (parting): its program computes the path, ncoffset does not model "
+     "it; a CYCLE92.SPF on the search path runs instead"},
     {"CYCLE93", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (groove)"},
+     "a Siemens standard cycle (groove): its program computes the path, ncoffset does not model "
+     "it; a CYCLE93.SPF on the search path runs instead"},
+    {"CYCLE930", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (groove): its program computes the path, ncoffset does not model "
+     "it; a CYCLE930.SPF on the search path runs instead"},
+    {"CYCLE940", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (undercut): its program computes the path, ncoffset does not model "
+     "it; a CYCLE940.SPF on the search path runs instead"},
     {"CYCLE95", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (stock "
-     "removal)"},
+     "a Siemens standard cycle (stock removal): its program computes the path, ncoffset does not "
+     "model it; a CYCLE95.SPF on the search path runs instead"},
+    {"CYCLE950", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (stock removal, extended): its program computes the path, ncoffset "
+     "does not model it; a CYCLE950.SPF on the search path runs instead"},
     {"CYCLE951", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (stock "
-     "removal)"},
+     "a Siemens standard cycle (stock removal): its program computes the path, ncoffset does not "
+     "model it; a CYCLE951.SPF on the search path runs instead"},
     {"CYCLE952", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (contour "
-     "turning)"},
+     "a Siemens standard cycle (contour turning): its program computes the path, ncoffset does not "
+     "model it; a CYCLE952.SPF on the search path runs instead"},
+    {"CYCLE96", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (thread undercut): its program computes the path, ncoffset does not "
+     "model it; a CYCLE96.SPF on the search path runs instead"},
     {"CYCLE97", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (thread "
-     "cutting)"},
+     "a Siemens standard cycle (thread cutting): its program computes the path, ncoffset does not "
+     "model it; a CYCLE97.SPF on the search path runs instead"},
     {"CYCLE98", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (thread "
-     "chaining)"},
+     "a Siemens standard cycle (thread chaining): its program computes the path, ncoffset does not "
+     "model it; a CYCLE98.SPF on the search path runs instead"},
     {"CYCLE99", NameClass::NotModelled, false, false, true,
-     "a machining cycle: the cycle program computes its own path; not modelled yet (thread "
-     "turning)"},
+     "a Siemens standard cycle (thread turning): its program computes the path, ncoffset does not "
+     "model it; a CYCLE99.SPF on the search path runs instead"},
     {"DELDTG", NameClass::NoPathEffect, false, false, false,
      "delete distance-to-go: acts only with a measuring input (not modelled)"},
     {"DELETE", NameClass::NoPathEffect, false, false, false,
@@ -203,9 +222,9 @@ constexpr PredefinedName kNames[] = {
     {"DISPR", NameClass::NoPathEffect, false, false, false,
      "repositioning distance (REPOS after an interruption)"},
     {"DITE", NameClass::NoPathEffect, false, false, false,
-     "run-out path of a thread (G33, itself not modelled)"},
+     "run-out path of a thread: the acceleration at the thread's end, not its path"},
     {"DITS", NameClass::NoPathEffect, false, false, false,
-     "run-in path of a thread (G33, itself not modelled)"},
+     "run-in path of a thread: the acceleration at the thread's start, not its path"},
     {"DL", NameClass::Modelled, false, false, false,
      "selects the sum/setup offset of the active edge (docs/tool-offsets.md section 10)"},
     {"DRFOF", NameClass::NoPathEffect, false, false, false,
@@ -249,6 +268,10 @@ constexpr PredefinedName kNames[] = {
     {"GROUP_BEGIN", NameClass::NoPathEffect, false, false, false,
      "marks a group of blocks for the program editor"},
     {"GROUP_END", NameClass::NoPathEffect, false, false, false, "end of GROUP_BEGIN"},
+    {"HOLES1", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (row of holes, docs/cycles.md)"},
+    {"HOLES2", NameClass::Modelled, false, false, true,
+     "a standard drilling cycle modelled by ncoffset (circle of holes, docs/cycles.md)"},
     {"IPTRLOCK", NameClass::NoPathEffect, false, false, false,
      "marks where a block search may not resume (operator function)"},
     {"IPTRUNLOCK", NameClass::NoPathEffect, false, false, false, "ends IPTRLOCK"},
@@ -259,6 +282,9 @@ constexpr PredefinedName kNames[] = {
      "profile), not where"},
     {"LIFTFAST", NameClass::NoPathEffect, false, false, false,
      "fast lift-off on an interrupt (interrupts are never triggered here)"},
+    {"LONGHOLE", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (elongated holes): its program computes the path, ncoffset does not "
+     "model it; a LONGHOLE.SPF on the search path runs instead"},
     {"MEAS", NameClass::NotModelled, false, false, false,
      "measuring with a probe: the block ends where the probe triggers; not modelled"},
     {"MEAW", NameClass::NotModelled, false, false, false,
@@ -286,6 +312,18 @@ constexpr PredefinedName kNames[] = {
     {"OVRRAP", NameClass::NoPathEffect, false, false, false,
      "rapid override: changes how fast the path is travelled (acceleration, jerk, feed profile), "
      "not where"},
+    {"POCKET1", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle: its program computes the path, ncoffset does not model it; a "
+     "POCKET1.SPF on the search path runs instead"},
+    {"POCKET2", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle: its program computes the path, ncoffset does not model it; a "
+     "POCKET2.SPF on the search path runs instead"},
+    {"POCKET3", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (rectangular pocket): its program computes the path, ncoffset does "
+     "not model it; a POCKET3.SPF on the search path runs instead"},
+    {"POCKET4", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (circular pocket): its program computes the path, ncoffset does not "
+     "model it; a POCKET4.SPF on the search path runs instead"},
     {"POS", NameClass::NotModelled, false, false, false,
      "positioning axis motion: axes other than X, Y, Z are not modelled"},
     {"POSA", NameClass::NotModelled, false, false, false,
@@ -327,7 +365,14 @@ constexpr PredefinedName kNames[] = {
     {"SETTCOR", NameClass::NotModelled, false, false, false,
      "changes tool components (W1 2.10.6): not modelled"},
     {"SF", NameClass::NoPathEffect, false, false, false,
-     "start angle of a thread (G33, itself not modelled)"},
+     "start angle of a thread (the spindle angle where the cut starts; multi-start threads: one "
+     "pass per start, docs/threads.md): not the path"},
+    {"SLOT1", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (slots on a circle): its program computes the path, ncoffset does "
+     "not model it; a SLOT1.SPF on the search path runs instead"},
+    {"SLOT2", NameClass::NotModelled, false, false, true,
+     "a Siemens standard cycle (circumferential slots): its program computes the path, ncoffset "
+     "does not model it; a SLOT2.SPF on the search path runs instead"},
     {"SOFTA", NameClass::NoPathEffect, false, false, false,
      "acceleration profile of positioning axes: changes how fast the path is travelled "
      "(acceleration, jerk, feed profile), not where"},

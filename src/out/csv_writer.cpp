@@ -9,7 +9,7 @@
 namespace ncoffset::out {
 
 namespace {
-// The longest CSV row: a line number (11), motion (2), 7 numbers of at most 32 characters
+// The longest CSV row: a line number (11), motion (at most 4), 7 numbers of at most 32 characters
 // (writeShortest), 8 commas and the newline.
 constexpr size_t kMaxRow = 320;
 // With --decimals: numbers of at most kRoundedRoom characters (writeRounded).
@@ -36,6 +36,8 @@ void CsvWriter::segment(const Segment& s) {
   *p++ = ',';
   *p++ = m[0];
   *p++ = m[1];
+  if (m[2] != 0) [[unlikely]]  // G33, G331, G63, ...
+    for (const char* c = m + 2; *c; ++c) *p++ = *c;
   for (double v : {s.end.x, s.end.y, s.end.z}) {
     *p++ = ',';
     p = writeShortest(p, v);
@@ -72,6 +74,8 @@ void RoundedCsvWriter::segment(const Segment& s) {
   *p++ = ',';
   *p++ = m[0];
   *p++ = m[1];
+  if (m[2] != 0) [[unlikely]]  // G33, G331, G63, ...
+    for (const char* c = m + 2; *c; ++c) *p++ = *c;
   const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
   for (int i = 0; i < 6; ++i) {  // the end point; the centre of an arc, else empty fields
     *p++ = ',';

@@ -96,7 +96,8 @@ class HtmlReport final : public PathSink {
   int decimals_;
   ReportContext context_;
   bool finished_ = false;
-  std::array<long long, 4> counts_{};  // per Motion
+  std::array<long long, 10> counts_{};  // per Motion
+  long long total_ = 0;
   double rapid_length_ = 0, cut_length_ = 0;
   Box box_;
   PathColumns output_, programmed_;

@@ -111,8 +111,11 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
     b.push_back('\n');
   }
   file_ = s.file;
-  if (motion != Motion::G0 && s.has_feed && s.feed_unit != unit_) feedUnit(s.feed_unit);
-  fmt::format_to(fmt::appender(b), "N{} {}", ++n_, motionName(motion));
+  const bool thread = isThreadMotion(motion) && motion != Motion::G63;
+  if (motion != Motion::G0 && !thread && s.has_feed && s.feed_unit != unit_) feedUnit(s.feed_unit);
+  // G63 is no motion of its own (group 2): the block is a G1 line with G63.
+  fmt::format_to(fmt::appender(b), "N{} {}", ++n_,
+                 motion == Motion::G63 ? "G1 G63" : motionName(motion));
   if (mcs_) append(b, " SUPA");
   const char* axis[3] = {" X", " Y", " Z"};
   for (int i = 0; i < 3; ++i) {
@@ -130,9 +133,30 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
     }
     if (s.turns > 0) fmt::format_to(fmt::appender(b), " TURN={}", s.turns);
   }
-  if (motion != Motion::G0) feedWord(s);
+  if (thread)
+    threadLead(s);
+  else if (motion != Motion::G0)
+    feedWord(s);
   source(s);
   w_.lineDone();
+}
+
+// A thread line: the lead (the segment's feed, mm/rev) at the address of the axis with the
+// longest path (PM-NC "G33": I, J, K for X, Y, Z; a taper thread's lead is that of its longer
+// axis); G34/G35 write the lead change as F, which is the modal F from then on.
+void MpfWriter::threadLead(const Segment& s) {
+  int ax = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(s.end[i] - s.start[i]) > std::fabs(s.end[ax] - s.start[ax])) ax = i;
+  const char* lead[3] = {" I", " J", " K"};
+  append(w_.buf(), lead[ax]);
+  appendNcNumber(w_.buf(), s.feed, decimals_);
+  if (s.motion == Motion::G34 || s.motion == Motion::G35) {
+    append(w_.buf(), " F");
+    appendNcNumber(w_.buf(), s.lead_change, decimals_);
+    has_feed_ = true;
+    feed_ = s.lead_change;
+  }
 }
 
 void MpfWriter::feedWord(const Segment& s) {

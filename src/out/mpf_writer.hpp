@@ -31,6 +31,7 @@ class MpfWriter final : public PathSink {
  private:
   void block(const Segment& s, Motion motion, Vec3 end);
   void feedWord(const Segment& s);  // the F word, when it changed
+  void threadLead(const Segment& s);
   void feedUnit(FeedUnit u);
   void source(const Segment& s);
 

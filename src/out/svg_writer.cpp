@@ -234,7 +234,10 @@ void SvgWriter::segment(const Segment& s) {
   if (finished_) return;
   box_.add(s);
   // Rapid traverse: G0, and the corner circle of a G0 block under radius compensation.
-  path_->draw(s, s.has_feed ? "nco-cut" : "nco-g0");
+  // Thread and tapping lines (G33..G63) in a style of their own (docs/threads.md).
+  const bool thread = isThreadMotion(s.motion);
+  threads_ |= thread;
+  path_->draw(s, thread ? "nco-thread" : s.has_feed ? "nco-cut" : "nco-g0");
   last_end_ = s.end;
 }
 
@@ -270,7 +273,7 @@ SvgWriter::Layout SvgWriter::writeHeader(const Alarm* alarm) {
   double size = std::max(x1 - x0, y1 - y0);
   if (!(size > 0)) size = 1;
   const double margin = 0.05 * size, font = 0.03 * size, row = 1.4 * font;
-  const int rows = alarm ? 5 : 4;
+  const int rows = (alarm ? 5 : 4) + (threads_ ? 1 : 0);
   double vx = x0 - margin, vy = y0 - margin;
   double vw = x1 - x0 + 2 * margin, vh = y1 - y0 + 2 * margin + (rows + 0.5) * row;
   if (vw < 0.8 * size) {  // room for the legend beside a narrow drawing
@@ -291,6 +294,7 @@ SvgWriter::Layout SvgWriter::writeHeader(const Alarm* alarm) {
          ".nco-prog{fill:none;stroke:#999;stroke-width:1;stroke-dasharray:4 3}\n"
          ".nco-g0{fill:none;stroke:#d9534f;stroke-width:1;stroke-dasharray:6 4}\n"
          ".nco-cut{fill:none;stroke:#1f5fbf;stroke-width:1.5;stroke-linejoin:round}\n"
+         ".nco-thread{fill:none;stroke:#2e8b3e;stroke-width:2;stroke-dasharray:2 2}\n"
          ".nco-alarm{fill:none;stroke:#e00000;stroke-width:2}\n"
          ".nco-legend{font-family:sans-serif;fill:#333}\n"
          "</style>\n");
@@ -302,10 +306,12 @@ SvgWriter::Layout SvgWriter::writeHeader(const Alarm* alarm) {
   };
   const Entry entries[] = {{"nco-prog", "programmed path (no radius compensation)"},
                            {"nco-g0", "G0 rapid traverse"},
-                           {"nco-cut", "G1/G2/G3 compensated path"}};
+                           {"nco-cut", "G1/G2/G3 compensated path"},
+                           {"nco-thread", "G33/G34/G35/G331/G332/G63 thread or tapping"}};
   append(b, "<g id=\"legend\">\n");
   int r = 0;
   for (const Entry& e : entries) {
+    if (!threads_ && e.cls == entries[3].cls) continue;  // the thread row where there are any
     double y = ly + (++r) * row;
     fmt::format_to(it,
                    "<path class=\"{}\" vector-effect=\"non-scaling-stroke\" d=\"M{} {}h{}\"/>"

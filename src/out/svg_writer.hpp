@@ -54,6 +54,7 @@ class SvgWriter final : public PathSink {
   bool standalone_;
   int decimals_;
   bool finished_ = false;
+  bool threads_ = false;  // a thread or tapping line was drawn (its legend row)
   std::unique_ptr<Layer> programmed_, path_;
   Box box_;
   Vec3 last_end_;  // where the path stands (machine zero before the first segment)

@@ -36,6 +36,8 @@ void JsonLinesWriter::segment(const Segment& s) {
   if (s.has_feed)
     fmt::format_to(it, ",\"feed\":{},\"feed_unit\":\"{}\"", Number{s.feed, d},
                    feedUnitName(s.feed_unit));
+  if (s.motion == Motion::G34 || s.motion == Motion::G35)  // feed: the start lead (mm/rev)
+    fmt::format_to(it, ",\"lead_change\":{}", Number{s.lead_change, d});
   fmt::format_to(it, "}}\n");
   w_.lineDone();
 }

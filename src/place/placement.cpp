@@ -18,6 +18,7 @@ Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
   s.feed = m.feed;
   s.feed_unit = m.feed_unit;
   s.has_feed = m.has_feed;
+  s.lead_change = m.lead_change;
   Vec3 normal;
   normal[g.applicate] = 1;
   if (coords_ == CoordSystem::WCS) {
