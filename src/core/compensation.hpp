@@ -80,13 +80,14 @@ struct TrcSettings {
   CollisionCheck collision = CollisionCheck::Cdof;
   double disc = 0;  // DISC= (already limited by MD20220)
   TrcStrategy strategy = TrcStrategy::G460;
+  // Group 22: false CUT2D/CUT2DD (the plane of G17..G19 in the machine), true CUT2DF/CUT2DFD
+  // (the plane of the active frame). docs/radius-compensation.md "CUT2D, CUT2DF". (Here: in the
+  // padding after `strategy`, the block copied per block does not grow.)
+  bool frame_plane = false;
   double corner_limit = 100;       // MD20210 CUTCOM_CORNER_LIMIT (degrees)
   double curve_insert_limit = 10;  // MD20230 CUTCOM_CURVE_INSERT_LIMIT (degrees)
   int max_dummy_blocks = 1;        // MD20250 CUTCOM_MAXNUM_DUMMY_BLOCKS
   int check_blocks = 3;            // MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS (look-ahead)
-  // Group 22: false CUT2D/CUT2DD (the plane of G17..G19 in the machine), true CUT2DF/CUT2DFD
-  // (the plane of the active frame). docs/radius-compensation.md "CUT2D, CUT2DF".
-  bool frame_plane = false;
 };
 
 // A smooth approach or retraction block (W1 2.4.4, spec §6): what the SAR stage needs to expand

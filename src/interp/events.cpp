@@ -36,7 +36,7 @@ void Interpreter::toolEvent() {
   e.line = line_;
   e.file = file_;
   e.edge = tools_.hasEdge() ? tools_.activeEdge() : 0;
-  e.radius = tools_.radius();
+  e.radius = tools_.lengths().radius;  // the whole radius, also with CUT2DD
   e.length = tools_.lengthVector(modal_.plane);
   if (words_.tool) {
     e.word = ToolEvent::Word::T;

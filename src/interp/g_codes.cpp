@@ -298,6 +298,7 @@ void Interpreter::namedWord(const Stmt& st) {
   if (w == "CUT2D" || w == "CUT2DF" || w == "CUT2DD" || w == "CUT2DFD") {  // group 22
     modal_.cut2d_frame = w == "CUT2DF" || w == "CUT2DFD";
     modal_.cut2d_differential = w == "CUT2DD" || w == "CUT2DFD";
+    tools_.setDifferential(modal_.cut2d_differential);
     return;
   }
   if (w == "SUPA") {

@@ -26,10 +26,12 @@ enum class DiamMode : unsigned char { Off, On, On90, CycOff };
 enum class DiamAxis : unsigned char { Chan, Off, On, On90, CycOff };
 
 struct ModalState {
-  Motion motion = Motion::G0;              // group 1 (initial G0 per common machine data)
-  Plane plane = Plane::G17;                // group 6
-  bool incremental = false;                // group 14: G90 / G91
-  Units units = Units::G71;                // group 13
+  Motion motion = Motion::G0;       // group 1 (initial G0 per common machine data)
+  Plane plane = Plane::G17;         // group 6
+  bool incremental = false;         // group 14: G90 / G91
+  bool cut2d_frame = false;         // group 22: CUT2DF, CUT2DFD (docs/radius-compensation.md)
+  bool cut2d_differential = false;  // group 22: CUT2DD, CUT2DFD (R = the differences only)
+  Units units = Units::G71;         // group 13
   core::TrcMode trc = core::TrcMode::Off;  // group 7: G40, G41, G42
   CornerMode corner = CornerMode::TransitionCircle;
   Approach approach = Approach::Norm;
@@ -53,10 +55,8 @@ struct ModalState {
   Vec3 thread_lead;  // the last lead I, J, K of a G33..G332 block, mm/rev (docs/threads.md)
   double disc = 0;                                 // DISC=
   double offn = 0;                                 // OFFN=
-  bool cut2d_frame = false;         // group 22: CUT2DF, CUT2DFD (docs/radius-compensation.md)
-  bool cut2d_differential = false;  // group 22: CUT2DD, CUT2DFD (R = the differences only)
-  int tool = 0;                     // T
-  int edge = 0;                     // D
+  int tool = 0;                                    // T
+  int edge = 0;                                    // D
 };
 
 // Words of one block, collected before execution (their order inside a block does not matter

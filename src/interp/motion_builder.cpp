@@ -242,7 +242,7 @@ Vec3 MotionBuilder::startAfterFrameChange(const BlockWords& w, const ModalState&
 NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& modal) {
   core::TrcSettings& t = m_.trc;
   t.mode = modal.trc;
-  t.radius = modal.offn + (modal.cut2d_differential ? tools_.radiusDifference() : tools_.radius());
+  t.radius = modal.offn + tools_.radius();
   t.frame_plane = modal.cut2d_frame;
   t.approach = modal.approach;
   t.corner = modal.corner;

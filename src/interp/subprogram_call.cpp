@@ -280,6 +280,7 @@ void Interpreter::restoreSaved(const CallFrame& f) {
           "return from a SAVE subprogram with another tool radius compensation (G40/G41/G42) "
           "than at its call is not modelled by ncoffset");
   modal_ = f.saved_modal;
+  tools_.setDifferential(modal_.cut2d_differential);  // group 22 is a G group: restored too
   // Addresses are no G functions: F, DISC=, OFFN=, T and D stay as the subprogram left them.
   modal_.feed = now.feed;
   modal_.disc = now.disc;

@@ -108,10 +108,13 @@ class ToolSelection {
   void setProgrammed(const ProgrammedOffsets& p);
   bool hasEdge() const { return edge_.valid; }
   // The compensation radius of the active edge (edge + wear), 0 without an edge.
-  double radius() const { return edge_.valid ? edge_.radius : 0.0; }
-  // CUT2DD/CUT2DFD: the radius minus $TC_DP6 (the standard tool's): the wear (W1 "differential
-  // tool"; docs/radius-compensation.md "CUT2D, CUT2DF").
-  double radiusDifference() const { return edge_.valid ? edge_.radius - edge_.data.dp[6] : 0.0; }
+  // (CUT2DD/CUT2DFD: the radius minus $TC_DP6, the standard tool's: only the deviation is
+  // compensated, docs/radius-compensation.md "CUT2D, CUT2DF"; set by setDifferential, so that the
+  // block pays nothing for it.)
+  double radius() const {
+    return edge_.valid ? edge_.radius - differential_ * edge_.data.dp[6] : 0.0;
+  }
+  void setDifferential(bool on) { differential_ = on ? 1.0 : 0.0; }
   // The BCS vector from the tool tip to the carrier reference point in `plane` (zero without
   // an edge), computed once per selection and plane.
   // (Inline: asked for every linear block.)
@@ -186,6 +189,7 @@ class ToolSelection {
 
   ToolStore tools_;
   DNumberConfig dconf_;
+  double differential_ = 0;  // 1 with CUT2DD/CUT2DFD
   std::vector<ToolEnvironment> envs_;
   size_t max_edges_;
   size_t edges_ = 0;  // cutting edges in the offset memory

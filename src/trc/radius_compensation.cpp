@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "core/inline_step.hpp"
 #include "trc/compensation_internal.hpp"
 
 namespace ncoffset::trc {
@@ -15,22 +16,24 @@ using core::MotionBlock;
 using core::TrcMode;
 using geom::Element;
 
-void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
+NCOFFSET_INLINE_STEP void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
   if (m.plane != selection_.plane)
     raise(AlarmNumber::TrcPlaneChange,
           "change of compensation plane not possible while tool radius compensation is active");
   if (!m.frame.sameAs(selection_.frame))
     detail::notModelled("a frame change while compensation is active");
-  if (m.trc.frame_plane != selection_.trc.frame_plane)
-    detail::notModelled("a change between CUT2D and CUT2DF while compensation is active");
-  if (projected_) checkProjectable(m);
+  if (m.trc.frame_plane != selection_.trc.frame_plane || projected_) [[unlikely]]
+    checkProjectable(m);
 }
 
 // CUT2D with a frame that tilts the working plane: the contour is compensated in its projection
 // into the machine's plane G17..G19 (W1 "CUT2D": the plane of G17..G19; CUT2DF: the frame's).
 // The projection of a circle is an ellipse and motion along the applicate moves the projection:
 // neither is modelled.
-void RadiusCompensation::checkProjectable(const MotionBlock& m) const {
+[[gnu::noinline]] void RadiusCompensation::checkProjectable(const MotionBlock& m) const {
+  if (m.trc.frame_plane != selection_.trc.frame_plane)
+    detail::notModelled("a change between CUT2D and CUT2DF while compensation is active");
+  if (!projected_) return;
   if (m.motion == Motion::G2 || m.motion == Motion::G3)
     detail::notModelled(
         "a circle under CUT2D in a plane a frame tilts (its projection into G17..G19 is an "
