@@ -40,8 +40,13 @@ void HtmlReport::segment(const Segment& s) {
   svg_.segment(s);
   long long n = counts_[0] + counts_[1] + counts_[2] + counts_[3];
   ++counts_[static_cast<size_t>(s.motion)];
-  (s.has_feed ? cut_length_ : rapid_length_) += segmentLength(s);  // rapid: no feed (path.hpp)
-  box_.add(s);
+  if (skip_first_) [[unlikely]] {  // from an assumed start position: only where it ends
+    skip_first_ = false;
+    box_.add(s.end);
+  } else {
+    (s.has_feed ? cut_length_ : rapid_length_) += segmentLength(s);  // rapid: no feed (path.hpp)
+    box_.add(s);
+  }
   if (n < kMaxRows) {
     auto it = fmt::appender(rows_);
     fmt::format_to(it,

@@ -27,6 +27,12 @@ class HtmlReport final : public PathSink {
   void warning(const SourceLoc& where, int number, const std::string& text) override;
   void programmed(const Segment& s) override { svg_.programmed(s); }
   bool wantsProgrammed() const override { return true; }
+  // The start position is assumed: the first move is neither drawn nor in the lengths and
+  // ranges (SvgWriter::leaveOutFirstMove); it is counted and listed as a segment.
+  void leaveOutFirstMove() {
+    svg_.leaveOutFirstMove();
+    skip_first_ = true;
+  }
   // Writes the page. Later calls do nothing.
   void finish(const Alarm* alarm) override;
 
@@ -44,6 +50,7 @@ class HtmlReport final : public PathSink {
   std::string program_, coords_;
   int decimals_;
   bool finished_ = false;
+  bool skip_first_ = false;
   std::array<long long, 4> counts_{};  // per Motion
   double rapid_length_ = 0, cut_length_ = 0;
   Box box_;
