@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -91,6 +92,14 @@ class Collector final : public PathSink {
   void feed(const FeedEvent& e) override {
     add("feed", ch_.fileName(e.file), e.line)["feed"] = e.feed;
   }
+  void frame(const FrameEvent& e) override {
+    py::dict d = add("frame", ch_.fileName(e.file), e.line);
+    const auto& l = e.map.linear.m;
+    d["offset"] = py::make_tuple(e.map.offset.x, e.map.offset.y, e.map.offset.z);
+    d["linear"] = py::make_tuple(py::make_tuple(l[0][0], l[0][1], l[0][2]),
+                                 py::make_tuple(l[1][0], l[1][1], l[1][2]),
+                                 py::make_tuple(l[2][0], l[2][1], l[2][2]));
+  }
   void finish(const Alarm* a) override {
     finished = true;
     if (a) alarm = *a;
@@ -140,8 +149,12 @@ class Collector final : public PathSink {
   const Channel& ch_;
 };
 
-RunOptions options(const std::string& coords) {
+// start=(x, y, z): the machine position (MCS) where the channel starts (RunOptions::start).
+using Start = std::optional<std::array<double, 3>>;
+
+RunOptions options(const std::string& coords, const Start& start) {
   RunOptions o;
+  if (start) o.start = Vec3{(*start)[0], (*start)[1], (*start)[2]};
   if (coords == "wcs" || coords == "WCS")
     o.coords = CoordSystem::WCS;
   else if (coords != "mcs" && coords != "MCS")
@@ -178,8 +191,9 @@ void runInits(Channel& ch, const std::vector<std::filesystem::path>& init) {
 }
 
 Result run(const std::filesystem::path& program, const std::vector<std::filesystem::path>& init,
-           const std::string& coords, std::optional<std::string> text, bool raise) {
-  Channel ch(options(coords));
+           const std::string& coords, std::optional<std::string> text, bool raise,
+           const Start& start) {
+  Channel ch(options(coords, start));
   runInits(ch, init);
   Collector c(ch);
   RunResult rr = text ? ch.runText(program.string(), *text, c, program.parent_path())
@@ -196,8 +210,9 @@ Result run(const std::filesystem::path& program, const std::vector<std::filesyst
 class PyStream {
  public:
   PyStream(const std::vector<std::filesystem::path>& init, const std::string& coords,
-           const std::string& name, const std::filesystem::path& dir, bool raise)
-      : channel_(options(coords)), collector_(channel_), raise_(raise) {
+           const std::string& name, const std::filesystem::path& dir, bool raise,
+           const Start& start)
+      : channel_(options(coords, start)), collector_(channel_), raise_(raise) {
     runInits(channel_, init);
     stream_ = std::make_unique<Stream>(channel_, collector_, name, dir);
   }
@@ -251,13 +266,14 @@ class AlarmError(Exception):
       });
   m.def("run", &run, py::arg("program"), py::arg("init") = std::vector<std::filesystem::path>{},
         py::arg("coords") = "mcs", py::arg("text") = py::none(), py::arg("raise_on_alarm") = true,
+        py::arg("start") = py::none(),
         "Runs a part program (a file, or `text` named `program`) after its init files.");
   py::class_<PyStream>(m, "Stream")
       .def(py::init<const std::vector<std::filesystem::path>&, const std::string&,
-                    const std::string&, const std::filesystem::path&, bool>(),
+                    const std::string&, const std::filesystem::path&, bool, const Start&>(),
            py::arg("init") = std::vector<std::filesystem::path>{}, py::arg("coords") = "mcs",
            py::arg("name") = "STREAM.MPF", py::arg("dir") = std::filesystem::path(),
-           py::arg("raise_on_alarm") = true)
+           py::arg("raise_on_alarm") = true, py::arg("start") = py::none())
       .def("feed", &PyStream::feed, py::arg("text"),
            "Feeds program text; returns what became final")
       .def("finish", &PyStream::finish, "The text is complete: returns the rest");

@@ -48,6 +48,12 @@ struct RunOptions {
   // centres times 2): --diameter, docs/turning.md. Default: radius values, as the machine
   // moves.
   bool diameter_output = false;
+  // Where the machine stands when the channel starts: the tool carrier reference point in machine
+  // coordinates (MCS, mm; `--start X,Y,Z`). The first segment starts here, and each segment
+  // starts where the one before ended (docs/tool-offsets.md section 5). Not given: machine zero
+  // 0,0,0, an assumed position: the CLI's drawings and statistics leave out the move from it
+  // (docs/output-formats.md "Start position").
+  std::optional<Vec3> start = std::nullopt;
 };
 
 // How a run ended.

@@ -79,6 +79,14 @@ struct FeedEvent {
   int line = 0, file = 0;
   double feed = 0;  // the modal feed after the block, mm/min (G94) or mm/rev (G95)
 };
+// The channel's frame changed (G54..G599, G500, TRANS/ROT/SCALE/MIRROR and their A forms, G58,
+// G59, frame variables): the WCS -> BCS map from this block on (FM K2). A WCS segment after it
+// is in this frame, so its start is the previous end expressed anew (docs/output-formats.md
+// "Start position"). G53/G153/SUPA suppress the frames of their own block only: no event.
+struct FrameEvent {
+  int line = 0, file = 0;
+  Affine map;  // BCS point = map.linear * WCS point + map.offset (MCS = BCS + tool length)
+};
 
 // Receives the path as it is produced, block by block (streaming).
 class PathSink {
@@ -103,6 +111,7 @@ class PathSink {
   virtual void dwell(const DwellEvent&) {}
   virtual void spindle(const SpindleEvent&) {}
   virtual void feed(const FeedEvent&) {}
+  virtual void frame(const FrameEvent&) {}
   // The run ended: normally (alarm == nullptr) or by an alarm.
   virtual void finish(const Alarm* alarm) = 0;
 };

@@ -50,6 +50,43 @@ def test_mcs_adds_the_tool_length(tools):
     assert mcs["z"][-1] - wcs["z"][-1] == pytest.approx(100)
 
 
+def test_start_position_and_a_continuous_path_across_a_tool_change(tools):
+    # Hand values: the carrier starts at (0, 0, 500) MCS; G0 Z50 without a tool moves it to Z50.
+    # T1 D1 (L1 = 100 along Z, MD22550 = 0: active at once) moves nothing; G0 Z5 takes the
+    # length up: the carrier runs from Z50 to Z5 + 100 = 105 (FM-W1: the offset is traversed
+    # with the next programmed motion of the axis), not from Z150. In WCS the same motion runs
+    # from Z50 - 100 = -50 (the new tool's tip under the carrier) to Z5.
+    text = "G17 G90 G0 Z50\nT1 D1\nG0 Z5\nM30\n"
+    mcs = ncoffset.run("S.MPF", init=[tools], text=text, start=(0, 0, 500)).segments
+    assert [tuple(mcs[k][0] for k in ("sx", "sy", "sz"))] == [(0, 0, 500)]
+    assert (mcs["sz"][1], mcs["z"][1]) == (pytest.approx(50), pytest.approx(105))
+    wcs = ncoffset.run("S.MPF", init=[tools], text=text, coords="wcs", start=(0, 0, 500)).segments
+    assert (wcs["sz"][1], wcs["z"][1]) == (pytest.approx(-50), pytest.approx(5))
+    # Without start=: machine zero; the stream takes the same option.
+    assert ncoffset.run("S.MPF", init=[tools], text=text).segments["sz"][0] == 0
+    s = ncoffset.Stream(init=[tools], start=(1, 2, 3))
+    part = s.feed(text)
+    rows = np.concatenate([part.segments, s.finish().segments])
+    assert (rows["sx"][0], rows["sy"][0], rows["sz"][0]) == (1, 2, 3)
+
+
+def test_frame_change_is_an_event_and_the_wcs_start_is_the_point_in_the_new_frame(tmp_path):
+    # Hand values: G54 ($P_UIFR[1] X100 Y50) after G0 X0 Y0 Z20 (MCS 0,0,20): the event with
+    # offset (100, 50, 0) comes before the segment of line 2, whose WCS start is MCS 0,0,20 in
+    # G54: X-100 Y-50 Z20 (the carrier does not jump: in MCS it starts at 0,0,20).
+    ini = tmp_path / "FR.INI"
+    ini.write_text("$P_UIFR[1,X,TR]=100\n$P_UIFR[1,Y,TR]=50\nM17\n")
+    text = "G0 X0 Y0 Z20\nG54 G0 X10\nM30\n"
+    r = ncoffset.run("F.MPF", init=[ini], coords="wcs", text=text)
+    frames = [e for e in r.events if e["type"] == "frame"]
+    assert len(frames) == 1 and frames[0]["segment"] == 1 and frames[0]["line"] == 2
+    assert frames[0]["offset"] == (100, 50, 0)
+    seg = r.segments
+    assert (seg["sx"][1], seg["sy"][1], seg["sz"][1]) == (-100, -50, 20)
+    mcs = ncoffset.run("F.MPF", init=[ini], text=text).segments
+    assert (mcs["sx"][1], mcs["sy"][1], mcs["sz"][1], mcs["x"][1]) == (0, 0, 20, 110)
+
+
 def test_pandas_takes_the_array(tools):
     pd = pytest.importorskip("pandas")
     r = ncoffset.run("CORNER.MPF", init=[tools], coords="wcs", text=CORNER)

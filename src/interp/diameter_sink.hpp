@@ -35,6 +35,7 @@ class DiameterSink final : public PathSink {
   void dwell(const DwellEvent& e) override { next->dwell(e); }
   void spindle(const SpindleEvent& e) override { next->spindle(e); }
   void feed(const FeedEvent& e) override { next->feed(e); }
+  void frame(const FrameEvent& e) override { next->frame(e); }
   void finish(const Alarm* a) override { next->finish(a); }
 };
 

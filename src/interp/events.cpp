@@ -67,6 +67,13 @@ void Interpreter::blockEvents(double feed_before) {
   }
   has_s_ = false;
   if (modal_.feed != feed_before) sink_.feed({line_, file_, modal_.feed});
+  // A frame change: one integer comparison per block; a frame programmed again with the same
+  // values (the same map) is no change.
+  const core::BlockFrame& frame = frames_.blockFrame();
+  if (frame.state() != event_frame_.state()) [[unlikely]] {
+    if (!frame.sameAs(event_frame_)) sink_.frame({line_, file_, frame.map()});
+    event_frame_ = frame;
+  }
 }
 
 void Interpreter::stopEvent() {

@@ -28,6 +28,7 @@ Interpreter::Interpreter(const RunOptions& options, PathSink& sink, core::Stage&
       flow_(options.limits),
       tools_(options.limits.max_tool_edges),
       motion_(first, data_, frames_, tools_) {
+  if (options.start) motion_.setStart(*options.start);
   md_max_disc_ = data_.find("$MC_CUTCOM_MAX_DISC");
   md_transverse_ = data_.find("$MC_DIAMETER_AX_DEF");
   md_base_function_mask_ = data_.find("$MA_BASE_FUNCTION_MASK");

@@ -304,7 +304,8 @@ class Interpreter final : public lang::Environment {
   bool events_ = false;      // the sink wants events (PathSink::wantsEvents)
   bool stop_after_ = false;  // M0/M1 in this block: the event follows its motion
   int stop_m_ = 0;
-  bool has_s_ = false;  // the block's S word (events only): speed, or G4 revolutions
+  bool has_s_ = false;            // the block's S word (events only): speed, or G4 revolutions
+  core::BlockFrame event_frame_;  // the frame of the last FrameEvent (events only)
   double dwell_s_ = 0;
   int dwell_s_ext_ = 0;
 

@@ -31,6 +31,9 @@ class MotionBuilder {
   MotionBuilder(core::Stage& next, const MachineData& data, const FrameState& frames,
                 const tool::ToolSelection& tools);
 
+  // Where the machine stands before the first block (RunOptions::start, MCS): no tool length is
+  // taken up yet and no frame is active, so the tool tip is there in the BCS and the WCS too.
+  void setStart(const Vec3& mcs) { bcs_ = wcs_ = mcs; }
   // Builds the block's motion and hands it on. False: a zero-length linear block (no segment).
   bool build(const BlockWords& w, const ModalState& modal, const BlockContext& at);
 

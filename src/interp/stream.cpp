@@ -33,7 +33,7 @@ struct Warning {
   std::string text;
 };
 using Record = std::variant<Segment, Programmed, Message, Warning, ToolEvent, MFunctionEvent,
-                            DwellEvent, SpindleEvent, FeedEvent>;
+                            DwellEvent, SpindleEvent, FeedEvent, FrameEvent>;
 }  // namespace
 
 struct Stream::Impl {
@@ -54,6 +54,7 @@ struct Stream::Impl {
     void dwell(const DwellEvent& e) override { add(e); }
     void spindle(const SpindleEvent& e) override { add(e); }
     void feed(const FeedEvent& e) override { add(e); }
+    void frame(const FrameEvent& e) override { add(e); }
     void finish(const Alarm*) override {}  // the stream finishes the sink on the caller's side
 
    private:
@@ -141,6 +142,7 @@ struct Stream::Impl {
   void write(const DwellEvent& e) { sink.dwell(e); }
   void write(const SpindleEvent& e) { sink.spindle(e); }
   void write(const FeedEvent& e) { sink.feed(e); }
+  void write(const FrameEvent& e) { sink.frame(e); }
 
   void append(std::string_view text) {
     if (!source->append(text))

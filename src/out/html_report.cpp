@@ -40,9 +40,14 @@ void HtmlReport::segment(const Segment& s) {
   }
   output_.add(s, tool_slot_, same);
   ++counts_[static_cast<size_t>(s.motion)];
-  (s.has_feed ? cut_length_ : rapid_length_) += segmentLength(s);  // rapid: no feed (path.hpp)
-  box_.add(s);
-  time_.segment(s);
+  if (skip_first_ && !first_seen_) [[unlikely]] {  // from an assumed start: only where it ends
+    box_.add(s.end);
+  } else {
+    (s.has_feed ? cut_length_ : rapid_length_) += segmentLength(s);  // rapid: no feed (path.hpp)
+    box_.add(s);
+    time_.segment(s);
+  }
+  first_seen_ = true;
   if (tool_slot_ >= 0) ++tools_[static_cast<size_t>(tool_slot_)].segments;
 }
 

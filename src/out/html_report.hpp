@@ -56,6 +56,9 @@ class HtmlReport final : public PathSink {
   void tool(const ToolEvent& e) override;
   void dwell(const DwellEvent& e) override { time_.dwell(e); }
   void spindle(const SpindleEvent& e) override { time_.spindle(e); }
+  // The start position is assumed (no --start): the first move is neither drawn nor in the
+  // lengths, ranges and time (docs/output-formats.md "Start position"); it is listed.
+  void leaveOutFirstMove() { skip_first_ = true; }
   // Writes the page. Later calls do nothing.
   void finish(const Alarm* alarm) override;
 
@@ -98,6 +101,7 @@ class HtmlReport final : public PathSink {
   bool finished_ = false;
   std::array<long long, 10> counts_{};  // per Motion
   long long total_ = 0;
+  bool skip_first_ = false, first_seen_ = false;  // leaveOutFirstMove()
   double rapid_length_ = 0, cut_length_ = 0;
   Box box_;
   PathColumns output_, programmed_;

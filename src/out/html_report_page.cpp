@@ -193,8 +193,9 @@ void HtmlReport::writeData(const Alarm* alarm) {
   auto it = fmt::appender(b);
   fmt::format_to(it,
                  "<script type=\"application/json\" id=\"nco-data\">{{\"view\":\"{}\","
-                 "\"coords\":\"{}\",\"decimals\":{},\"program\":",
-                 viewName(view_), coords_ == "wcs" ? "wcs" : "mcs", decimals_);
+                 "\"coords\":\"{}\",\"decimals\":{},\"skip_first\":{},\"program\":",
+                 viewName(view_), coords_ == "wcs" ? "wcs" : "mcs", decimals_,
+                 skip_first_ ? "true" : "false");
   appendScriptString(b, program_);
   writeFiles();
   append(b, ",\n\"out\":");

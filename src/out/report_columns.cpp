@@ -41,7 +41,12 @@ void PathColumns::add(const Segment& s, int tool, bool same) {
   // The start is written where it is not the end point before (the first segment's always).
   const bool start =
       i == 0 || s.start.x != last_end_.x || s.start.y != last_end_.y || s.start.z != last_end_.z;
-  int kind = static_cast<int>(s.motion) + (s.has_feed ? 4 : 0) + (start ? 8 : 0) + (same ? 16 : 0);
+  // Bits 0-1 the drawn motion (a thread or tapping line is drawn as G1), 2 feed, 3 start, 4 the
+  // same as programmed, 5 a thread line, 6-8 which one (G33 .. G63, docs/threads.md).
+  const int m = static_cast<int>(s.motion);
+  const int drawn = isThreadMotion(s.motion) ? 1 : m;
+  const int thread = isThreadMotion(s.motion) ? 32 + ((m - 4) << 6) : 0;
+  int kind = drawn + (s.has_feed ? 4 : 0) + (start ? 8 : 0) + (same ? 16 : 0) + thread;
   fmt::format_to(fmt::appender(kinds_.element()), "{}", kind);
   number(x_.element(), s.end.x);
   number(y_.element(), s.end.y);

@@ -232,6 +232,12 @@ SvgWriter::~SvgWriter() = default;
 
 void SvgWriter::segment(const Segment& s) {
   if (finished_) return;
+  last_end_ = s.end;
+  if (skip_path_) [[unlikely]] {  // from an assumed start position: only where it ends
+    skip_path_ = false;
+    box_.add(s.end);
+    return;
+  }
   box_.add(s);
   // Rapid traverse: G0, and the corner circle of a G0 block under radius compensation.
   // Thread and tapping lines (G33..G63) in a style of their own (docs/threads.md).
@@ -243,6 +249,11 @@ void SvgWriter::segment(const Segment& s) {
 
 void SvgWriter::programmed(const Segment& s) {
   if (finished_) return;
+  if (skip_programmed_) [[unlikely]] {
+    skip_programmed_ = false;
+    box_.add(s.end);
+    return;
+  }
   box_.add(s);
   programmed_->draw(s, "nco-prog");
 }

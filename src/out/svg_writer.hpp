@@ -38,6 +38,10 @@ class SvgWriter final : public PathSink {
   void segment(const Segment& s) override;
   void programmed(const Segment& s) override;
   bool wantsProgrammed() const override { return true; }
+  // The run's start position is assumed (RunOptions::start not given): the move from it to the
+  // first segment's end is not drawn, and only that end is in the viewBox (docs/output-formats.md
+  // "Start position").
+  void leaveOutFirstMove() { skip_path_ = skip_programmed_ = true; }
   // Writes the drawing; an alarm is marked at the last end point. Later calls do nothing.
   void finish(const Alarm* alarm) override;
 
@@ -55,6 +59,7 @@ class SvgWriter final : public PathSink {
   int decimals_;
   bool finished_ = false;
   bool threads_ = false;  // a thread or tapping line was drawn (its legend row)
+  bool skip_path_ = false, skip_programmed_ = false;  // leaveOutFirstMove(), until the first
   std::unique_ptr<Layer> programmed_, path_;
   Box box_;
   Vec3 last_end_;  // where the path stands (machine zero before the first segment)

@@ -107,6 +107,18 @@ void JsonLinesWriter::feed(const FeedEvent& e) {
   w_.lineDone();
 }
 
+void JsonLinesWriter::frame(const FrameEvent& e) {
+  eventHead("frame", e.line, e.file);
+  const auto& l = e.map.linear.m;
+  const auto n = [this](double v) { return Number{v + 0.0, decimals_}; };
+  fmt::format_to(fmt::appender(w_.buf()),
+                 ",\"offset\":[{},{},{}],\"linear\":[[{},{},{}],[{},{},{}],[{},{},{}]]}}\n",
+                 n(e.map.offset.x), n(e.map.offset.y), n(e.map.offset.z), n(l[0][0]), n(l[0][1]),
+                 n(l[0][2]), n(l[1][0]), n(l[1][1]), n(l[1][2]), n(l[2][0]), n(l[2][1]),
+                 n(l[2][2]));
+  w_.lineDone();
+}
+
 void JsonLinesWriter::finish(const Alarm* alarm) {
   if (alarm) {
     auto& b = w_.buf();

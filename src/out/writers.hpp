@@ -77,6 +77,7 @@ class JsonLinesWriter final : public PathSink {
   void dwell(const DwellEvent& e) override;
   void spindle(const SpindleEvent& e) override;
   void feed(const FeedEvent& e) override;
+  void frame(const FrameEvent& e) override;
   void finish(const Alarm* alarm) override;
 
  private:

@@ -99,8 +99,30 @@ void checkRange(const Segment& s, int line) {
 
 }  // namespace
 
+void Placement::rejoin(Segment& s, const MotionBlock& m, Joint& j) const {
+  // The frame or the tool offset changed (or this is the first segment): the previous end as a
+  // machine position (MCS = frame(WCS) + offset, Segment points of turning tools included), and
+  // that point expressed with this segment's frame and offset. The change of the carrier position
+  // (the length take-up) is part of this motion (W1 2.1: the offset is traversed with the next
+  // programmed motion of the axis), never a jump.
+  if (j.placed) {
+    const bool wcs = coords_ == CoordSystem::WCS;
+    const Vec3 mcs = wcs ? j.frame.apply(j.at) + j.offset : j.at;
+    if (!wcs)
+      s.start = mcs;
+    else if (m.frame.isIdentity())
+      s.start = mcs - m.tool_offset;
+    else
+      s.start = m.frame.map().inverse().apply(mcs - m.tool_offset);
+  }
+  j.placed = true;
+  j.offset = m.tool_offset;
+  j.frame = m.frame;
+}
+
 core::Feedback Placement::motion(const MotionBlock& m) {
-  const Segment s = toSegment(m, core::geometryOf(m));
+  Segment s = toSegment(m, core::geometryOf(m));
+  join(s, m, path_);
   // Blocks that radius compensation made or moved (corner circles, approach and retraction
   // lines) carry its settings; programmed positions were checked by the interpreter.
   if (m.trc.mode != core::TrcMode::Off) checkRange(s, m.line);
@@ -110,7 +132,8 @@ core::Feedback Placement::motion(const MotionBlock& m) {
 }
 
 void Placement::element(const MotionBlock& like, const Geometry& g) {
-  const Segment s = toSegment(like, g);
+  Segment s = toSegment(like, g);
+  join(s, like, path_);
   checkRange(s, like.line);
   seq_ = like.seq;
   sink_.segment(s);
@@ -122,7 +145,9 @@ void Placement::warning(const MotionBlock& m, int number, const std::string& tex
 }
 
 void Placement::programmedSegment(const MotionBlock& m) {
-  sink_.programmed(toSegment(m, core::geometryOf(m)));
+  Segment s = toSegment(m, core::geometryOf(m));
+  join(s, m, programmed_);
+  sink_.programmed(s);
 }
 
 }  // namespace ncoffset::place

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "core/stage.hpp"
@@ -14,7 +15,14 @@ namespace ncoffset::place {
 
 class Placement final : public core::Stage {
  public:
-  Placement(PathSink& sink, CoordSystem coords) : sink_(sink), coords_(coords) {}
+  // `start`: where the tool carrier stands in the MCS before the first segment (the channel's
+  // start position, RunOptions::start); without one the first segment keeps the start its block
+  // gives (tests of single blocks).
+  Placement(PathSink& sink, CoordSystem coords, std::optional<Vec3> start = std::nullopt)
+      : sink_(sink), coords_(coords) {
+    if (start) path_.at = programmed_.at = *start;
+    path_.placed = programmed_.placed = start.has_value();
+  }
   // At the start of each run (the sink behind a run may change): how to name files in
   // warnings, and whether the sink draws the programmed path.
   void beginRun(std::function<const std::string&(int)> file_name) {
@@ -33,6 +41,24 @@ class Placement final : public core::Stage {
   long long seq() const { return seq_; }
 
  private:
+  // Where a layer of the path stands: the last segment's end (output coordinates) and the frame
+  // and tool offset it was placed with.
+  struct Joint {
+    bool placed = false;  // a segment was written (or the start position is known)
+    Vec3 at;
+    Vec3 offset;
+    core::BlockFrame frame;
+  };
+  // A segment placed with another frame or tool offset than the one before starts where that one
+  // ended: the carrier does not jump at a tool or frame change (docs/tool-offsets.md section 5).
+  void join(Segment& s, const core::MotionBlock& m, Joint& j) const {
+    const bool same = m.frame.state() == j.frame.state() && m.tool_offset.x == j.offset.x &&
+                      m.tool_offset.y == j.offset.y && m.tool_offset.z == j.offset.z;
+    if (!same) [[unlikely]]
+      rejoin(s, m, j);
+    j.at = s.end;
+  }
+  void rejoin(Segment& s, const core::MotionBlock& m, Joint& j) const;
   void programmedSegment(const core::MotionBlock& m);
   Segment toSegment(const core::MotionBlock& m, const core::Geometry& g) const;
   // P - S at the points of `g` on the path of S (core::TipAt).
@@ -42,6 +68,7 @@ class Placement final : public core::Stage {
   CoordSystem coords_;
   bool wants_programmed_ = false;
   long long seq_ = 0;
+  Joint path_, programmed_;  // the compensated path and the programmed one (drawings)
   std::function<const std::string&(int)> file_name_;
 };
 

@@ -114,5 +114,65 @@ p = run("--init", lathe[0], "--init", lathe[1], "--diameter", "-o", os.path.join
 check("lathe: --diameter refused for svg", p.returncode == 1 and "--diameter" in p.stderr,
       (p.returncode, p.stderr))
 
+# A continuous path (docs/output-formats.md "Start position"): the tool changes of the lathe
+# example and the length take-up of the lentoax example draw without a jump, every <path> of
+# the output layer beginning where the one before ended; without --start the drawing begins at
+# the first segment's end (the move from the assumed start is left out), with --start at the
+# start position.
+import re
+def path_points(svg_file):
+    """The (start, end) of each <path> of the output layer, in SVG coordinates."""
+    root = svg_root(svg_file)
+    if isinstance(root, str):
+        return []
+    runs = []
+    for e in root.findall(f".//{NS}g[@id='path']/{NS}path"):
+        tokens = re.findall(r"[MLA]|[-+0-9.eE]+", e.get("d", ""))
+        pts, cmd, nums = [], None, []
+        for t in tokens + ["M"]:
+            if t in "MLA":
+                if cmd:
+                    k = 7 if cmd == "A" else 2
+                    for j in range(0, len(nums), k):
+                        pts.append((float(nums[j + k - 2]), float(nums[j + k - 1])))
+                cmd, nums = t, []
+            else:
+                nums.append(t)
+        runs.append((pts[0], pts[-1]))
+    return runs
+
+def jumps(runs):
+    return [(a[1], b[0]) for a, b in zip(runs, runs[1:])
+            if max(abs(a[1][0] - b[0][0]), abs(a[1][1] - b[0][1])) > 1e-6]
+
+drawn = {
+    "lentoax": (["--init", os.path.join(examples, "tools.INI")], "lentoax.MPF", "xy"),
+    "lathe": (["--init", lathe[0], "--init", lathe[1]], "lathe.MPF", "zx"),
+}
+for name, (inits, prog, view) in drawn.items():
+    for view_name in sorted({view, "zx"}):
+        out = os.path.join(d, f"cont_{name}_{view_name}.svg")
+        p = run(*inits, "--view", view_name, "-o", out, os.path.join(examples, prog))
+        runs = path_points(out)
+        check(f"{name} --view {view_name}: drawn without a jump", p.returncode == 0 and runs
+              and not jumps(runs), (p.stderr, jumps(runs)))
+out = os.path.join(d, "cont_start.svg")
+p = run("--init", os.path.join(examples, "tools.INI"), "--view", "zx", "--start", "0,0,500",
+        "-o", out, os.path.join(examples, "lentoax.MPF"))
+runs = path_points(out)
+# lentoax.MPF: G0 X0 Y0 Z50 first; in the ZX view (Z right, X up, y = -X) from (Z500, X0).
+check("--start 0,0,500: the first move is drawn from the start position",
+      p.returncode == 0 and runs and runs[0][0] == (500.0, 0.0), (p.stderr, runs[:1]))
+out = os.path.join(d, "cont_nostart.svg")
+p = run("--init", os.path.join(examples, "tools.INI"), "--view", "zx", "-o", out,
+        os.path.join(examples, "lentoax.MPF"))
+runs = path_points(out)
+check("without --start the drawing begins at the first segment's end (Z50, X0)",
+      p.returncode == 0 and runs and runs[0][0] == (50.0, 0.0), (p.stderr, runs[:1]))
+for bad in ("1,2", "1,2,3,4", "a,b,c", "0x10,0,0", "inf,0,0", "1,,2", "2e9,0,0"):
+    p = run("--start", bad, os.path.join(examples, "lentoax.MPF"))
+    check(f"--start {bad} refused with exit 1", p.returncode == 1 and "--start" in p.stderr,
+          (p.returncode, p.stderr))
+
 print("all format checks hold" if not fails else f"{len(fails)} format checks fail")
 sys.exit(1 if fails else 0)

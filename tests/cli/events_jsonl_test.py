@@ -41,4 +41,24 @@ check("M5 before X30", recs[11]["number"] == 5 and recs[12]["x"] == 30, recs[11:
 c = subprocess.run([binary, "--init", os.path.join(d, "TOOLS.INI"), prog], capture_output=True,
                    text=True)
 check("csv: header and the three segments only", len(c.stdout.splitlines()) == 4, c.stdout)
+
+# Frame events: G54 (from $P_UIFR[1]: X100 Y50) and TRANS Z-10 change the frame, G54 again with
+# the same values and a SUPA block do not. By hand: the frame record of line 2 has offset
+# [100,50,0] and the unit matrix; the one of line 4 offset [100,50,-10]; each comes before its
+# block's segment (G1 F100 adds its feed event).
+open(os.path.join(d, "FR.INI"), "w").write("$P_UIFR[1,X,TR]=100\n$P_UIFR[1,Y,TR]=50\nM17\n")
+fr = os.path.join(d, "FR.MPF")
+open(fr, "w").write("G0 X0 Y0 Z20\nG54 G0 X10\nG54\nTRANS Z-10\nG1 Z0 F100\nG0 SUPA Z5\nM30\n")
+p = subprocess.run([binary, "--init", os.path.join(d, "FR.INI"), "--format", "jsonl", fr],
+                   capture_output=True, text=True)
+recs = [json.loads(l) for l in p.stdout.splitlines()]
+kinds = [r.get("type", "seg") for r in recs]
+check("frame: exit 0, records in order", p.returncode == 0 and
+      kinds == ["seg", "frame", "seg", "frame", "feed", "seg", "seg"], (p.stderr, kinds))
+if len(recs) == 7:
+    f1, f2 = recs[1], recs[3]
+    unit = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    check("frame G54", f1["line"] == 2 and f1["offset"] == [100, 50, 0] and f1["linear"] == unit, f1)
+    check("frame TRANS", f2["line"] == 4 and f2["offset"] == [100, 50, -10] and f2["linear"] == unit,
+          f2)
 sys.exit(1 if fails else 0)

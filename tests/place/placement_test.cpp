@@ -193,5 +193,43 @@ TEST(Placement, TurnsArePassedOn) {
   EXPECT_EQ(place(b, CoordSystem::WCS).turns, 3);
 }
 
+// Two lines: G0 Z50 without a tool, then (T1 D1, L1 = 100 along Z) G0 X10 Z5 under ROT Z90
+// (X of the WCS along Y of the BCS) and TRANS X100. By hand: the first ends at MCS (0, 0, 50);
+// the second is placed with the frame and the offset (0, 0, 100): it ends at
+// ROT(10, 0, 5) + (100, 0, 0) + (0, 0, 100) = (100, 10, 105) and starts at (0, 0, 50), where
+// the carrier stands (the take-up is part of this motion, docs/tool-offsets.md section 5). In
+// WCS it starts at that point in the new frame and tool: ROT^-1((0, 0, 50) - (100, 0, 0) -
+// (0, 0, 100)) = ROT^-1(-100, 0, -50) = (0, 100, -50).
+TEST(Placement, ASegmentAfterAFrameAndToolChangeStartsWhereThePreviousEnded) {
+  MotionBlock first;
+  first.motion = Motion::G0;
+  first.end = {0, 0, 50};
+  MotionBlock second;
+  second.motion = Motion::G0;
+  second.start = {0, 0, 50};  // the interpreter's WCS start: no use after the change
+  second.end = {10, 0, 5};
+  Frame f;
+  f.coarse = {100, 0, 0};
+  f.rotation = {0, 0, 90};
+  second.frame = affineOf(f);
+  second.tool_offset = {0, 0, 100};
+  for (CoordSystem cs : {CoordSystem::MCS, CoordSystem::WCS}) {
+    Collect sink;
+    Placement p(sink, cs, Vec3{0, 0, 0});
+    p.motion(first);
+    p.motion(second);
+    ASSERT_EQ(sink.segments.size(), 2u);
+    const Segment& s = sink.segments[1];
+    if (cs == CoordSystem::MCS) {
+      expectVec(sink.segments[0].start, 0, 0, 0);
+      expectVec(s.start, 0, 0, 50);
+      expectVec(s.end, 100, 10, 105);
+    } else {
+      expectVec(s.start, 0, 100, -50);
+      expectVec(s.end, 10, 0, 5);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ncoffset::place

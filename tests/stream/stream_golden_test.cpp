@@ -8,15 +8,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "ncoffset/channel.hpp"
 #include "ncoffset/stream.hpp"
+#include "support/golden_cases.hpp"
 
-namespace fs = std::filesystem;
 using namespace ncoffset;
 
 namespace {
@@ -55,6 +53,12 @@ class Recorder final : public PathSink {
   void feed(const FeedEvent& e) override {
     add(fmt::format("feed {}:{} {}", e.file, e.line, e.feed));
   }
+  void frame(const FrameEvent& e) override {
+    const auto& l = e.map.linear.m;
+    add(fmt::format("frame {}:{} {} {} {} {} {} {} {} {} {} {} {} {}", e.file, e.line,
+                    e.map.offset.x, e.map.offset.y, e.map.offset.z, l[0][0], l[0][1], l[0][2],
+                    l[1][0], l[1][1], l[1][2], l[2][0], l[2][1], l[2][2]));
+  }
   void finish(const Alarm* a) override {
     ++finished;
     add(a ? fmt::format("alarm {} {}:{}:{} {}", a->number, a->where.file, a->where.line,
@@ -67,85 +71,15 @@ class Recorder final : public PathSink {
   void add(std::string s) { records.push_back(std::move(s)); }
 };
 
-struct Case {
-  fs::path program;
-  std::string name;
-  RunOptions options;
-  std::vector<fs::path> inits;
-};
-
-void PrintTo(const Case& c, std::ostream* os) {
-  *os << c.name;
-}
-
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// The options of the case's "# args:" line that change a run.
-void parseArgs(const std::string& args, const fs::path& dir, Case& c) {
-  std::istringstream in(args);
-  std::vector<std::string> a;
-  for (std::string w; in >> w;) a.push_back(w);
-  Limits& l = c.options.limits;
-  for (size_t i = 0; i + 1 < a.size(); ++i) {
-    const std::string& k = a[i];
-    const std::string& v = a[i + 1];
-    if (k == "--init") c.inits.push_back(dir / v);
-    if (k == "--coords") c.options.coords = v == "wcs" ? CoordSystem::WCS : CoordSystem::MCS;
-    if (k == "--max-blocks") l.max_blocks = std::stoll(v);
-    if (k == "--max-blocks-without-motion") l.max_blocks_without_motion = std::stoll(v);
-    if (k == "--max-expression-depth") l.max_expression_depth = std::stoi(v);
-    if (k == "--max-line-length") l.max_line_length = std::stoul(v);
-    if (k == "--max-program-levels") l.max_program_levels = std::stoi(v);
-    if (k == "--max-total-elements") l.max_total_elements = std::stoul(v);
-    if (k == "--max-variables") l.max_variables = std::stoul(v);
-  }
-}
-
-std::vector<Case> discover() {
-  std::vector<Case> cases;
-  for (const auto& e : fs::recursive_directory_iterator(NCOFFSET_PROGRAMS)) {
-    if (!e.is_regular_file() || e.path().extension() != ".expected") continue;
-    Case c;
-    fs::path stem = e.path();
-    stem.replace_extension("");
-    for (const char* ext : {".MPF", ".mpf"}) {
-      fs::path p = stem;
-      p += ext;
-      if (fs::exists(p)) c.program = p;
-    }
-    if (c.program.empty()) continue;
-    c.name = fs::relative(stem, NCOFFSET_PROGRAMS).string();
-    for (auto& ch : c.name)
-      if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-    std::istringstream in(readAll(e.path()));
-    for (std::string l; std::getline(in, l);)
-      if (l.rfind("# args:", 0) == 0) parseArgs(l.substr(7), stem.parent_path(), c);
-    cases.push_back(c);
-  }
-  std::sort(cases.begin(), cases.end(),
-            [](const Case& a, const Case& b) { return a.name < b.name; });
-  return cases;
-}
-
-// Runs the init files; false if one failed (the case is then about the init file).
-bool runInits(Channel& ch, const Case& c) {
-  for (const auto& f : c.inits) {
-    Recorder ignored;
-    if (ch.runInit(f, ignored).status != RunResult::Status::Ok) return false;
-  }
-  return true;
-}
+using golden::readAll;
+using golden::runGoldenInits;
+using Case = golden::GoldenCase;
 
 // Feeds `text` in pieces of `chunk` characters (0: line by line).
 std::vector<std::string> streamed(const Case& c, const std::string& text, size_t chunk) {
   Channel ch(c.options);
   Recorder rec;
-  if (!runInits(ch, c)) return {"init failed"};
+  if (!runGoldenInits(ch, c)) return {"init failed"};
   Stream s(ch, rec, c.program.filename().string(), c.program.parent_path());
   size_t at = 0;
   while (at < text.size()) {
@@ -183,7 +117,7 @@ TEST_P(StreamGolden, SameAsWholeText) {
   const std::string text = readAll(c.program);
   Channel whole_ch(c.options);
   Recorder whole;
-  if (!runInits(whole_ch, c)) GTEST_SKIP() << "an init file of the case fails";
+  if (!runGoldenInits(whole_ch, c)) GTEST_SKIP() << "an init file of the case fails";
   whole_ch.runText(c.program.filename().string(), text, whole, c.program.parent_path());
   for (size_t chunk : {size_t{0}, size_t{7}}) {
     std::vector<std::string> s = streamed(c, text, chunk);
@@ -199,7 +133,8 @@ TEST_P(StreamGolden, SameAsWholeText) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Programs, StreamGolden, ::testing::ValuesIn(discover()),
+INSTANTIATE_TEST_SUITE_P(Programs, StreamGolden,
+                         ::testing::ValuesIn(golden::discoverGoldenCases(NCOFFSET_PROGRAMS)),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include "out/writers.hpp"
 #include "output_file.hpp"
 #include "progress_line.hpp"
+#include "start_option.hpp"
 #include "terminal_text.hpp"
 
 namespace {
@@ -49,6 +50,7 @@ class MessagePrinter final : public ncoffset::PathSink {
   void dwell(const ncoffset::DwellEvent& e) override { next_.dwell(e); }
   void spindle(const ncoffset::SpindleEvent& e) override { next_.spindle(e); }
   void feed(const ncoffset::FeedEvent& e) override { next_.feed(e); }
+  void frame(const ncoffset::FrameEvent& e) override { next_.frame(e); }
   void finish(const ncoffset::Alarm* alarm) override { next_.finish(alarm); }
 
  private:
@@ -80,6 +82,7 @@ struct Args {
   int decimals = -1;              // --decimals: -1 the shortest round-trip text
   bool diameter = false;
   bool quiet = false;  // -q: no progress line
+  std::string start;  // --start X,Y,Z (empty: machine zero, assumed)
 };
 
 // What the HTML report reads from the channel: the files of the run, the offset memory and the
@@ -106,12 +109,21 @@ std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
   auto names = [&channel](int i) -> const std::string& { return channel.fileName(i); };
   const int d = a.decimals;
   if (a.format == "jsonl") return std::make_unique<ncoffset::out::JsonLinesWriter>(out, names, d);
-  if (a.format == "svg")
-    return std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view),
-                                                      true, d);
-  if (a.format == "html")
-    return std::make_unique<ncoffset::out::HtmlReport>(
+  // Without --start the machine position at the start is assumed: drawings and statistics leave
+  // out the move from it (docs/output-formats.md "Start position").
+  const bool assumed = a.start.empty();
+  if (a.format == "svg") {
+    auto w = std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view),
+                                                        true, d);
+    if (assumed) w->leaveOutFirstMove();
+    return w;
+  }
+  if (a.format == "html") {
+    auto w = std::make_unique<ncoffset::out::HtmlReport>(
         out, ncoffset::out::viewFromName(a.view), a.program, a.coords, d, reportContext(channel));
+    if (assumed) w->leaveOutFirstMove();
+    return w;
+  }
   if (a.format == "mpf")
     return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names, d, a.diameter);
   if (d >= 0) return std::make_unique<ncoffset::out::RoundedCsvWriter>(out, d);
@@ -213,6 +225,9 @@ int main(int argc, char** argv) {
                  "round written numbers to at most N decimals, 0..17 (default: shortest "
                  "round trip; mpf: 6)")
       ->transform(ncoffset::cli::limitValue(17, 0));
+  app.add_option("--start", a.start,
+                 "X,Y,Z: machine position (MCS) of the tool carrier at the start (default: "
+                 "0,0,0, assumed: the move from it is not drawn)");
   app.add_flag("--diameter", a.diameter,
                "csv, jsonl, mpf: the transverse axis (MD20100) as diameter values (default: "
                "radius values)");
@@ -267,5 +282,13 @@ int main(int argc, char** argv) {
     return 1;
   }
   options.diameter_output = a.diameter;
+  if (!a.start.empty()) {
+    std::string why;
+    options.start = ncoffset::cli::parseStart(a.start, why);
+    if (!options.start) {
+      ncoffset::cli::printError("--start: " + why);
+      return 1;
+    }
+  }
   return run(a, options);
 }

@@ -5,6 +5,7 @@
 const NCO = { state: {} };
 
 NCO.MOTION = ["G0", "G1", "G2", "G3"];
+NCO.THREAD = ["G33", "G34", "G35", "G331", "G332", "G63"];
 NCO.UNIT = ["mm/min", "mm/rev", "1/min"];
 
 NCO.decodePath = function (c) {
@@ -13,7 +14,7 @@ NCO.decodePath = function (c) {
     n: n,
     x: new Float64Array(c.X), y: new Float64Array(c.Y), z: new Float64Array(c.Z),
     sx: new Float64Array(n), sy: new Float64Array(n), sz: new Float64Array(n),
-    kind: new Uint8Array(c.K), line: new Int32Array(n), file: new Int32Array(n),
+    kind: new Uint16Array(c.K), line: new Int32Array(n), file: new Int32Array(n),
     tool: new Int32Array(n), feed: new Float64Array(n), unit: new Uint8Array(n),
     arc: new Int32Array(n).fill(-1), arcs: new Float64Array(c.A.length * 7),
   };
@@ -36,6 +37,10 @@ NCO.decodePath = function (c) {
 };
 
 NCO.motion = function (p, i) { return p.kind[i] & 3; };
+// The motion's name: a thread or tapping line is drawn as G1 but named as programmed.
+NCO.motionName = function (p, i) {
+  return p.kind[i] & 32 ? NCO.THREAD[(p.kind[i] >> 6) & 7] : NCO.MOTION[p.kind[i] & 3];
+};
 NCO.hasFeed = function (p, i) { return (p.kind[i] & 4) !== 0; };
 NCO.isArc = function (p, i) { return (p.kind[i] & 2) !== 0; };
 
@@ -155,6 +160,10 @@ NCO.load = function () {
   NCO.times = { parse: Math.round(performance.now() - t0) };
   NCO.out = NCO.decodePath(d.out);
   NCO.prog = NCO.decodePath(d.prog);
+  if (d.skip_first) {  // assumed start position (no --start): the first move is not drawn
+    for (const p of [NCO.out, NCO.prog])
+      if (p.n > 0) { p.sx[0] = p.x[0]; p.sy[0] = p.y[0]; p.sz[0] = p.z[0]; }
+  }
   d.out = d.prog = null;
   const m = NCO.matchProgrammed(NCO.out, NCO.prog);
   NCO.match = m.match; NCO.inserted = m.inserted;

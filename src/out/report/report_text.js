@@ -120,7 +120,7 @@ NCO.initSegments = function () {
     return '<div class="sr' + (on ? " selected" : "") + '" data-i="' + i + '" data-file="' + p.file[i] +
            '" data-line="' + p.line[i] + '"><span>' + (i + 1) + '</span><span class="w">' +
            NCO.escape(name.replace(/^.*[\\/]/, "")) + ":" + p.line[i] + "</span><span>" +
-           NCO.MOTION[NCO.motion(p, i)] + (NCO.inserted[i] ? "*" : "") + "</span><span>" +
+           NCO.motionName(p, i) + (NCO.inserted[i] ? "*" : "") + "</span><span>" +
            NCO.fmt(p.x[i]) + "</span><span>" + NCO.fmt(p.y[i]) + "</span><span>" + NCO.fmt(p.z[i]) +
            "</span><span>" + (NCO.hasFeed(p, i) ? NCO.fmt(p.feed[i]) : "") + "</span></div>";
   });

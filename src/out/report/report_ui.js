@@ -114,7 +114,7 @@ NCO.status = function (text) { document.getElementById("nco-status").textContent
 NCO.describe = function (i) {
   const p = NCO.out, f = p.file[i], line = p.line[i], text = NCO.lineText(f, line - 1).trim();
   let s = (NCO.data.files[f] || "") + ":" + line + "  " + text.slice(0, 80) + "\n" +
-          NCO.MOTION[NCO.motion(p, i)] + (NCO.inserted[i] ? " (inserted by compensation)" : "") +
+          NCO.motionName(p, i) + (NCO.inserted[i] ? " (inserted by compensation)" : "") +
           "  end " + NCO.point(p, i) + "\n";
   s += NCO.hasFeed(p, i) ? "feed F" + NCO.fmt(p.feed[i]) + " " + NCO.UNIT[p.unit[i]] : "rapid traverse";
   const j = NCO.match[i];
