@@ -32,6 +32,8 @@ void Interpreter::finishBlock() {
   bool axes_consumed = false;
   if (!words_.frame_command.empty()) {
     doFrameCommand();
+    axes_.frameCommand(words_.frame_command,
+                       modal_.units == Units::G70 || modal_.units == Units::G700);
     frames_changed = true;
     axes_consumed = true;
   } else if (words_.axial_offset == 58 || words_.axial_offset == 59) {
@@ -64,7 +66,11 @@ void Interpreter::finishBlock() {
           "circle programming error: I, J, K, CR=, AR= or TURN= without G2/G3");
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   bool moved = false;
-  if (!axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
+  if (words_.extra_axes) [[unlikely]]  // A, B, C, ...: axis_words.cpp
+    moved = axesBlock(axes_consumed,
+                      any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None);
+  else if (!axes_consumed &&
+           (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None))
     moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();

@@ -61,7 +61,7 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
   std::string_view name = st.name;
   auto value = [&]() { return wordValue(st); };
   char c = name[0];
-  if (int i = axisIndex(c); i >= 0) {
+  if (int i = axisIndex(c); i >= 0 && !geo_renamed_) {
     if (words_.axis[i])
       raise(AlarmNumber::AddressTwice, fmt::format("address {} programmed too often", name));
     words_.axis[i] = true;
@@ -69,8 +69,10 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
     words_.axis_mode[i] = st.mode;  // DAC/DIC/RAC/RIC: checked where applied (MotionBuilder)
     return;
   }
-  if (st.mode != AxisMode::Default && c != 'I' && c != 'J' && c != 'K')
+  if (st.mode != AxisMode::Default && c != 'I' && c != 'J' && c != 'K') {
+    if (axisWord(st)) return;  // A=DC(90), X1 renamed (axis_words.cpp)
     raise(AlarmNumber::SyntaxError, fmt::format("AC/IC is not allowed with address {}", name));
+  }
   switch (c) {
     case 'I':
     case 'J':
@@ -117,6 +119,10 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
     case 'N':
       raise(AlarmNumber::SyntaxError, "block number N only at the start of a block");
     default:
+      if (axisWord(st)) return;  // A, B, C, U, V, W, ... (axis_words.cpp)
+      if (geo_renamed_ && c >= 'X' && c <= 'Z')
+        raise(AlarmNumber::NameNotDefined,
+              fmt::format("name {} not defined: the geometry axes are named by MD20060", name));
       notModelled(fmt::format("address {}", name),
                   "only the geometry axes X, Y, Z move; other axes and addresses are not modelled");
   }
@@ -240,6 +246,10 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     value();
     return;
   }
+  if (axisWord(st)) return;  // X1=, A1=, ... (axis_words.cpp)
+  if (st.mode > AxisMode::IC)
+    raise(AlarmNumber::SyntaxError,
+          fmt::format("DAC/DIC/RAC/RIC/DC/ACP/ACN only with an axis, not with {}", name));
   if (turningWord(st)) return;
   // The other extended addresses: (b) accepted, (c) alarm 99010 (docs/names.md).
   if (predefinedAssign(name, Value::real(value()))) return;

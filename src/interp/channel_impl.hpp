@@ -53,6 +53,8 @@ class SwitchSink final : public PathSink {
   void dwell(const DwellEvent& e) override { post(e); }
   void spindle(const SpindleEvent& e) override { post(e); }
   void feed(const FeedEvent& e) override { post(e); }
+  void axisNames(const std::vector<std::string>& n) override { target->axisNames(n); }
+  void axes(const AxesEvent& e) override { post(e); }
   void finish(const Alarm* a) override { target->finish(a); }
   // Writes the events still waiting (end of a run: nothing is held back any more).
   void releaseAll() { release(-1); }
@@ -62,8 +64,8 @@ class SwitchSink final : public PathSink {
     SourceLoc where;
     std::string text;
   };
-  using Event =
-      std::variant<ToolEvent, MFunctionEvent, DwellEvent, SpindleEvent, FeedEvent, Message>;
+  using Event = std::variant<ToolEvent, MFunctionEvent, DwellEvent, SpindleEvent, FeedEvent,
+                             AxesEvent, Message>;
   struct Pending {
     long long after;  // the motions sent before the event
     Event event;
@@ -97,6 +99,7 @@ class SwitchSink final : public PathSink {
           if constexpr (std::is_same_v<T, DwellEvent>) target->dwell(v);
           if constexpr (std::is_same_v<T, SpindleEvent>) target->spindle(v);
           if constexpr (std::is_same_v<T, FeedEvent>) target->feed(v);
+          if constexpr (std::is_same_v<T, AxesEvent>) target->axes(v);
           if constexpr (std::is_same_v<T, Message>) target->message(v.where, v.text);
         },
         e);

@@ -35,6 +35,8 @@ class DiameterSink final : public PathSink {
   void dwell(const DwellEvent& e) override { next->dwell(e); }
   void spindle(const SpindleEvent& e) override { next->spindle(e); }
   void feed(const FeedEvent& e) override { next->feed(e); }
+  void axisNames(const std::vector<std::string>& n) override { next->axisNames(n); }
+  void axes(const AxesEvent& e) override { next->axes(e); }
   void finish(const Alarm* a) override { next->finish(a); }
 };
 

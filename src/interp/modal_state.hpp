@@ -87,6 +87,7 @@ struct BlockWords {
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;
   int column = 0;
+  bool extra_axes = false;  // words of additional axes (ChannelAxes holds them)
 
   void clear();
 };

@@ -36,6 +36,15 @@ void JsonLinesWriter::segment(const Segment& s) {
   if (s.has_feed)
     fmt::format_to(it, ",\"feed\":{},\"feed_unit\":\"{}\"", Number{s.feed, d},
                    feedUnitName(s.feed_unit));
+  if (!axes_.empty()) {  // the additional axes: "axes":{"A":90,...} (docs/output-formats.md)
+    fmt::format_to(it, ",\"axes\":{{");
+    for (size_t k = 0; k < axes_.names.size(); ++k) {
+      if (k) b.push_back(',');
+      appendJsonString(b, axes_.names[k]);
+      fmt::format_to(it, ":{}", Number{axes_.positions[k] + 0.0, d});
+    }
+    b.push_back('}');
+  }
   fmt::format_to(it, "}}\n");
   w_.lineDone();
 }
