@@ -201,7 +201,6 @@ bool Interpreter::axisDataWrite(std::string_view name, std::span<const Value> id
     if (!indexed || idx.size() != 1)
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [n]", name));
     axes_.setName(table, static_cast<int>(lang::toNumber(idx[0], "index")), lang::toText(v));
-    geo_renamed_ = axes_.geometryRenamed();
     return true;
   }
   if (!isRotaryFlag(name) && !isModuloFlag(name)) return false;

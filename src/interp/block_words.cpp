@@ -61,7 +61,7 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
   std::string_view name = st.name;
   auto value = [&]() { return wordValue(st); };
   char c = name[0];
-  if (int i = axisIndex(c); i >= 0 && !geo_renamed_) {
+  if (int i = axisIndex(c); i >= 0) {  // also when MD20060 renamed them (docs "Axes")
     if (words_.axis[i])
       raise(AlarmNumber::AddressTwice, fmt::format("address {} programmed too often", name));
     words_.axis[i] = true;
@@ -120,9 +120,10 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
       raise(AlarmNumber::SyntaxError, "block number N only at the start of a block");
     default:
       if (axisWord(st)) return;  // A, B, C, U, V, W, ... (axis_words.cpp)
-      if (geo_renamed_ && c >= 'X' && c <= 'Z')
+      if (axes_.configured() && std::string_view("ABCUVW").find(c) != std::string_view::npos)
         raise(AlarmNumber::NameNotDefined,
-              fmt::format("name {} not defined: the geometry axes are named by MD20060", name));
+              fmt::format("name {} not defined: no axis {} in this channel (MD20060/MD20080)", name,
+                          name));
       notModelled(fmt::format("address {}", name),
                   "only the geometry axes X, Y, Z move; other axes and addresses are not modelled");
   }

@@ -257,9 +257,8 @@ class Interpreter final : public lang::Environment {
   int dwell_s_ext_ = 0;
 
   FrameState frames_;
-  ChannelAxes axes_;          // the axes beyond X, Y, Z (axis_words.cpp)
-  bool geo_renamed_ = false;  // MD20060 names the geometry axes other than X, Y, Z
-  int md_max_disc_ = 0;       // MD20220, looked up once
+  ChannelAxes axes_;                                   // the axes beyond X, Y, Z (axis_words.cpp)
+  int md_max_disc_ = 0;                                // MD20220, looked up once
   int md_transverse_ = 0, md_base_function_mask_ = 0;  // MD20100, MD30460
   // MD20150 by G group - 1 (the modelled groups: turning_data.cpp).
   std::array<int, 60> reset_values_{};

@@ -86,8 +86,8 @@ struct BlockWords {
   core::SarKind sar = core::SarKind::None;        // G147..G348 (smooth approach / retraction)
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;
+  bool extra_axes = false;  // words of additional axes (ChannelAxes holds them; in the padding)
   int column = 0;
-  bool extra_axes = false;  // words of additional axes (ChannelAxes holds them)
 
   void clear();
 };
