@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "ncoffset/alarm.hpp"
 #include "ncoffset/geometry.hpp"
@@ -75,6 +76,14 @@ struct SpindleEvent {
   double speed = 0;  // S value as programmed (rev/min)
   int spindle = 0;   // address extension S2=...; 0 without one (the master spindle)
 };
+// The positions of the channel's additional axes (A, B, C, U, V, W, ... beyond X/Y/Z;
+// docs/language.md "Axes") after a block that moves one, in the order of
+// PathSink::axisNames and in the run's coordinates (MCS: machine positions, WCS: programmed
+// positions; a modulo rotary axis in 0 <= value < 360). They hold from the next segment on.
+struct AxesEvent {
+  int line = 0, file = 0;
+  std::vector<double> positions;
+};
 struct FeedEvent {
   int line = 0, file = 0;
   double feed = 0;  // the modal feed after the block, mm/min (G94) or mm/rev (G95)
@@ -112,6 +121,11 @@ class PathSink {
   virtual void spindle(const SpindleEvent&) {}
   virtual void feed(const FeedEvent&) {}
   virtual void frame(const FrameEvent&) {}
+  // The additional axes the run writes (their output columns), once, before the program's
+  // first segment; never called for a run that uses none. Their positions: axes(), sent
+  // whatever wantsEvents() says, before the segments of the block that moves them.
+  virtual void axisNames(const std::vector<std::string>& /*names*/) {}
+  virtual void axes(const AxesEvent&) {}
   // The run ended: normally (alarm == nullptr) or by an alarm.
   virtual void finish(const Alarm* alarm) = 0;
 };

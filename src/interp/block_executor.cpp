@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/not_modelled.hpp"
 #include "interp/interpreter.hpp"
 #include "ncoffset/alarm.hpp"
 
@@ -32,6 +33,8 @@ void Interpreter::finishBlock() {
   bool axes_consumed = false;
   if (!words_.frame_command.empty()) {
     doFrameCommand();
+    axes_.frameCommand(words_.frame_command,
+                       modal_.units == Units::G70 || modal_.units == Units::G700);
     frames_changed = true;
     axes_consumed = true;
   } else if (words_.axial_offset == 58 || words_.axial_offset == 59) {
@@ -64,13 +67,21 @@ void Interpreter::finishBlock() {
     threadLeadWords();  // I, J, K of a thread (threads.cpp); else the circle alarm
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   bool moved = false;
-  bool builds =
-      !axes_consumed && (any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None);
+  const bool geometry =
+      any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None;
+  bool builds = !axes_consumed && geometry;
   // Contour definitions, CIP/CT, polar coordinates (contour_definition.cpp): only blocks with
   // such words, or while RNDM/CIP/CT/an ANG block is active.
-  if ((words_.contour | contour_active_) && contourBlock(axes_consumed, builds, moved))
-    builds = false;
-  if (builds) moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+  if ((words_.contour | contour_active_) && contourBlock(axes_consumed, builds, moved)) {
+    if (words_.extra_axes) [[unlikely]]
+      core::notModelled("an additional axis (A, B, C, ...) in a block with a contour definition",
+                        "chamfers, roundings, ANG=, CIP, CT and polar points are built for the "
+                        "geometry axes only");
+  } else if (words_.extra_axes) [[unlikely]] {  // A, B, C, ...: axis_words.cpp
+    moved = axesBlock(axes_consumed, geometry);
+  } else if (builds) {
+    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+  }
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
   // A block that reaches the main run without moving (M, S, F, zero-length, ...) between two

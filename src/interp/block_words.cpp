@@ -61,7 +61,7 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
   std::string_view name = st.name;
   auto value = [&]() { return wordValue(st); };
   char c = name[0];
-  if (int i = axisIndex(c); i >= 0) {
+  if (int i = axisIndex(c); i >= 0) {  // also when MD20060 renamed them (docs "Axes")
     if (words_.axis[i])
       raise(AlarmNumber::AddressTwice, fmt::format("address {} programmed too often", name));
     words_.axis[i] = true;
@@ -69,8 +69,10 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
     words_.axis_mode[i] = st.mode;  // DAC/DIC/RAC/RIC: checked where applied (MotionBuilder)
     return;
   }
-  if (st.mode != AxisMode::Default && c != 'I' && c != 'J' && c != 'K')
+  if (st.mode != AxisMode::Default && c != 'I' && c != 'J' && c != 'K') {
+    if (axisWord(st)) return;  // A=DC(90), X1 renamed (axis_words.cpp)
     raise(AlarmNumber::SyntaxError, fmt::format("AC/IC is not allowed with address {}", name));
+  }
   switch (c) {
     case 'I':
     case 'J':
@@ -117,6 +119,11 @@ NCOFFSET_INLINE_STEP void Interpreter::letterWord(const Stmt& st) {
     case 'N':
       raise(AlarmNumber::SyntaxError, "block number N only at the start of a block");
     default:
+      if (axisWord(st)) return;  // A, B, C, U, V, W, ... (axis_words.cpp)
+      if (axes_.configured() && std::string_view("ABCUVW").find(c) != std::string_view::npos)
+        raise(AlarmNumber::NameNotDefined,
+              fmt::format("name {} not defined: no axis {} in this channel (MD20060/MD20080)", name,
+                          name));
       notModelled(fmt::format("address {}", name),
                   "only the geometry axes X, Y, Z move; other axes and addresses are not modelled");
   }
@@ -240,6 +247,10 @@ NCOFFSET_INLINE_STEP void Interpreter::extendedWord(const Stmt& st) {
     value();
     return;
   }
+  if (axisWord(st)) return;  // X1=, A1=, ... (axis_words.cpp)
+  if (st.mode > AxisMode::IC)
+    raise(AlarmNumber::SyntaxError,
+          fmt::format("DAC/DIC/RAC/RIC/DC/ACP/ACN only with an axis, not with {}", name));
   if (turningWord(st)) return;
   if (name == "TCARR") {  // orientable toolholder (toolholder_words.cpp)
     toolholderNumber(value());

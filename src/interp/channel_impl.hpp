@@ -54,6 +54,8 @@ class SwitchSink final : public PathSink {
   void spindle(const SpindleEvent& e) override { post(e); }
   void feed(const FeedEvent& e) override { post(e); }
   void frame(const FrameEvent& e) override { post(e); }
+  void axisNames(const std::vector<std::string>& n) override { target->axisNames(n); }
+  void axes(const AxesEvent& e) override { post(e); }
   void finish(const Alarm* a) override { target->finish(a); }
   // Writes the events still waiting (end of a run: nothing is held back any more).
   void releaseAll() { release(-1); }
@@ -64,7 +66,7 @@ class SwitchSink final : public PathSink {
     std::string text;
   };
   using Event = std::variant<ToolEvent, MFunctionEvent, DwellEvent, SpindleEvent, FeedEvent,
-                             FrameEvent, Message>;
+                             FrameEvent, AxesEvent, Message>;
   struct Pending {
     long long after;  // the motions sent before the event
     Event event;
@@ -99,6 +101,7 @@ class SwitchSink final : public PathSink {
           if constexpr (std::is_same_v<T, SpindleEvent>) target->spindle(v);
           if constexpr (std::is_same_v<T, FeedEvent>) target->feed(v);
           if constexpr (std::is_same_v<T, FrameEvent>) target->frame(v);
+          if constexpr (std::is_same_v<T, AxesEvent>) target->axes(v);
           if constexpr (std::is_same_v<T, Message>) target->message(v.where, v.text);
         },
         e);

@@ -36,6 +36,8 @@ class DiameterSink final : public PathSink {
   void spindle(const SpindleEvent& e) override { next->spindle(e); }
   void feed(const FeedEvent& e) override { next->feed(e); }
   void frame(const FrameEvent& e) override { next->frame(e); }
+  void axisNames(const std::vector<std::string>& n) override { next->axisNames(n); }
+  void axes(const AxesEvent& e) override { next->axes(e); }
   void finish(const Alarm* a) override { next->finish(a); }
 };
 

@@ -95,7 +95,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   flow_.begin(program);
   vars_.beginRun();
   resetCalls();
-  without_motion_ = 0;  // an init file's data blocks do not count against the program
+  without_motion_ = 0;             // an init file's data blocks do not count against the program
+  if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
   std::string_view text;
   const size_t max_len = options_.limits.max_line_length;
@@ -317,6 +318,7 @@ bool Interpreter::read(std::string_view name, std::span<const Value> idx, bool i
       }
       out = v->data[VariableStore::elementIndex(*v, idx, name)];
     } else {
+      if (indexed && readStringChar(*v, idx, name, out)) return true;  // STRG[i]
       if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} is not an array", name));
       out = v->data[0];
     }
@@ -340,22 +342,26 @@ Value Interpreter::readR(double number) {
 
 void Interpreter::assign(const Stmt& st) {
   const Node& target = block_.node(st.target);
-  if (target.kind == NodeKind::Index && target.text == "AX" && !vars_.find("AX")) {
-    // Indirect axis programming AX[axis]=value (PM-JP "Indirect programming").
+  if (target.kind == NodeKind::Index &&
+      (target.text == "AX" || target.text == "POS" || target.text == "POSA") &&
+      !vars_.find(target.text)) {
+    // Indirect axis programming AX[axis]=value (PM-JP "Indirect programming"); POS[ax]=,
+    // POSA[ax]= positioning axes: the end position as an axis word of the block (docs/
+    // language.md "Axes").
     if (target.b != 1) raise(AlarmNumber::ArrayIndex1, "AX[..] takes one axis");
     Stmt word = st;
     Value axis = eval_.evalOrSymbol(block_, block_.arg(target, 0));
     if (!axis.isText()) raise(AlarmNumber::TypeMismatch, "AX[..] needs an axis name");
-    if (axis.str != "X" && axis.str != "Y" && axis.str != "Z")
-      raise(AlarmNumber::NotModelled,
-            fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)",
-                        axis.str));
-    static constexpr std::string_view kAxes[] = {"X", "Y", "Z"};
-    word.name = kAxes[axis.str[0] - 'X'];
+    // The axis by its configured name (docs/language.md "Axes"): a view of the name the
+    // channel keeps, valid for the block.
+    const int ax = anyAxis(axis, target.text);
+    word.name = ax < 3 ? std::string_view(axes_.geometryNames()[static_cast<size_t>(ax)])
+                       : std::string_view(axes_.axes()[static_cast<size_t>(ax - 3)].name);
     const Node& rhs = block_.node(st.expr);
     static constexpr std::pair<std::string_view, lang::AxisMode> kModes[] = {
         {"AC", lang::AxisMode::AC},   {"IC", lang::AxisMode::IC},   {"DAC", lang::AxisMode::DAC},
-        {"DIC", lang::AxisMode::DIC}, {"RAC", lang::AxisMode::RAC}, {"RIC", lang::AxisMode::RIC}};
+        {"DIC", lang::AxisMode::DIC}, {"RAC", lang::AxisMode::RAC}, {"RIC", lang::AxisMode::RIC},
+        {"DC", lang::AxisMode::DC},   {"ACP", lang::AxisMode::ACP}, {"ACN", lang::AxisMode::ACN}};
     for (const auto& [text, mode] : kModes)
       if (rhs.kind == NodeKind::Call && rhs.text == text && rhs.b == 1) {
         word.mode = mode;
@@ -398,6 +404,7 @@ void Interpreter::store(const Node& target, const Value& v) {
         raise(AlarmNumber::TypeMismatch, fmt::format("array {} used without index", target.text));
       at = VariableStore::elementIndex(*var, idx, target.text);
     } else if (indexed) {
+      if (writeStringChar(*var, idx, target.text, v)) return;  // STRG[i]=c (string_chars.cpp)
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} is not an array", target.text));
     }
     Value x = convertForStore(v, var->type, var->string_length, target.text);

@@ -13,6 +13,7 @@
 
 #include "core/stage.hpp"
 #include "interp/contour_state.hpp"
+#include "interp/channel_axes.hpp"
 #include "interp/frame_state.hpp"
 #include "interp/loop_watch.hpp"
 #include "interp/machine_data.hpp"
@@ -160,6 +161,24 @@ class Interpreter final : public lang::Environment {
   void doFrameCommand();
   double toMm(double v) const;
 
+  // STRG[i] of a STRING variable (string_chars.cpp); false for another type.
+  bool readStringChar(const UserVariable& v, std::span<const lang::Value> idx,
+                      std::string_view name, lang::Value& out);
+  bool writeStringChar(UserVariable& v, std::span<const lang::Value> idx, std::string_view name,
+                       const lang::Value& x);
+  // --- additional axes (axis_words.cpp, docs/language.md "Axes") ---
+  bool axisWord(const lang::Stmt& st);
+  size_t settableIndex() const;
+  bool axesBlock(bool consumed, bool geometry_motion);
+  void announceAxes();
+  int anyAxis(const lang::Value& v, std::string_view what) const;
+  bool axisDataRead(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                    lang::Value& out);
+  bool axisDataWrite(std::string_view name, std::span<const lang::Value> idx, bool indexed,
+                     const lang::Value& v);
+  bool axisFrameWrite(std::string_view name, std::span<const lang::Value> idx,
+                      const lang::Value& v);
+
   // --- turning (turning.cpp, turning_data.cpp) ---
   bool diameterWord(std::string_view w);
   bool turningWord(const lang::Stmt& st);
@@ -226,7 +245,7 @@ class Interpreter final : public lang::Environment {
   void writeSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                    const lang::Value& v);
   // X, Y, Z as 0, 1, 2 (99010 for another axis, 12150 for no axis name).
-  static int axisIndexOf(const lang::Value& v);
+  int axisIndexOf(const lang::Value& v) const;
   Frame* frameByName(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                      bool& whole);
 
@@ -310,6 +329,7 @@ class Interpreter final : public lang::Environment {
   int dwell_s_ext_ = 0;
 
   FrameState frames_;
+  ChannelAxes axes_;                                   // the axes beyond X, Y, Z (axis_words.cpp)
   int md_max_disc_ = 0;                                // MD20220, looked up once
   int md_transverse_ = 0, md_base_function_mask_ = 0;  // MD20100, MD30460
   // MD20150 by G group - 1 (the modelled groups: turning_data.cpp).

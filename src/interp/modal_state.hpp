@@ -92,6 +92,7 @@ struct BlockWords {
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;
   bool contour = false;  // a contour-definition word (CHF=, RND=, ANG=, AP=, CIP, G110, ...)
+  bool extra_axes = false;  // words of additional axes (ChannelAxes holds them; in the padding)
   int column = 0;
 
   void clear();

@@ -40,7 +40,14 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
     bool absolute = mode == AxisMode::AC || (mode == AxisMode::Default && !modal.incremental);
     // Diameter programming (docs/turning.md): a diameter is twice the radius position.
     double factor = absolute ? modal.diam_abs[i] : modal.diam_inc[i];
-    if (mode > AxisMode::IC) {  // DAC, DIC, RAC, RIC: diameter or radius for this word
+    if (mode > AxisMode::IC) {   // DAC, DIC, RAC, RIC: diameter or radius for this word
+      if (mode >= AxisMode::DC)  // a geometry axis is linear (docs/language.md "Axes")
+        raise(mode == AxisMode::DC    ? AlarmNumber::DcNotAllowed
+              : mode == AxisMode::ACP ? AlarmNumber::AcpNotAllowed
+                                      : AlarmNumber::AcnNotAllowed,
+              fmt::format("traverse instruction DC/ACP/ACN for axis {} not allowed (a linear "
+                          "axis)",
+                          "XYZ"[i]));
       if (!modal.diam_permitted[i])
         raise(AlarmNumber::NoTransverseAxis,
               fmt::format("no transverse axis: DAC/DIC/RAC/RIC need {} as the transverse axis "
@@ -93,7 +100,7 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   m.sar.kind = core::SarKind::None;
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     arc(w, modal, from, plain, to);
-  } else if (!takeUpLength(w, modal, plain, to) && !sar) {
+  } else if (!takeUpLength(w, modal, plain, to) && !sar && !w.extra_axes) {
     // A chamfer or rounding at a block that moves nowhere has no corner: reduced to nothing.
     if (routed_) corner_.dropRequest();
     wcs_ = suppressed_ ? frames_.toWcs(bcs_) : to;

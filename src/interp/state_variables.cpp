@@ -18,12 +18,8 @@ using lang::Value;
 
 namespace {
 
-int stateAxisIndex(const Value& v, std::string_view name) {
-  if (v.isText() && v.str.size() == 1 && v.str[0] >= 'X' && v.str[0] <= 'Z') return v.str[0] - 'X';
-  if (v.isText())
-    raise(AlarmNumber::NotModelled,
-          fmt::format("{}[{}]: axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)",
-                      name, v.str, v.str));
+int stateAxisIndex(const Value& v, std::string_view name, const ChannelAxes& axes) {
+  if (v.isText()) return axes.geometryAxisOf(v.str, name);
   raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
 }
 
@@ -119,7 +115,7 @@ bool Interpreter::readState(std::string_view name, std::span<const Value> idx, b
   if (name == "$AA_IW" || name == "$AA_IM") {
     if (!indexed || idx.size() != 1)
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
-    const int axis = stateAxisIndex(idx[0], name);
+    const int axis = stateAxisIndex(idx[0], name, axes_);
     // The tool tip where the last block left it: through the frame of that block into the BCS
     // and the MCS (with the tool length the axes have taken up), and seen through the frame
     // active now for $AA_IW (a frame programmed since then changes $AA_IW, as on the control).

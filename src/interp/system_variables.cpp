@@ -14,14 +14,9 @@ using lang::Value;
 
 namespace {
 
-int axisOf(const Value& v) {
-  if (v.type == Type::Symbol || v.type == Type::Axis || v.type == Type::String) {
-    if (v.str == "X") return 0;
-    if (v.str == "Y") return 1;
-    if (v.str == "Z") return 2;
-    raise(AlarmNumber::NotModelled,
-          fmt::format("axis {} is not modelled by ncoffset (geometry axes X, Y, Z only)", v.str));
-  }
+int axisOf(const Value& v, const ChannelAxes& axes) {
+  if (v.type == Type::Symbol || v.type == Type::Axis || v.type == Type::String)
+    return axes.geometryAxisOf(v.str, "axis");
   raise(AlarmNumber::TypeMismatch, "an axis name (X, Y, Z) is expected");
 }
 
@@ -80,18 +75,19 @@ Frame* Interpreter::frameByName(std::string_view name, std::span<const Value> id
   return f;
 }
 
-int Interpreter::axisIndexOf(const Value& v) {
-  return axisOf(v);
+int Interpreter::axisIndexOf(const Value& v) const {
+  return axisOf(v, axes_);
 }
 
 bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, bool indexed,
                              Value& out) {
   if (turningDataRead(name, idx, indexed, out)) return true;
+  if (axisDataRead(name, idx, indexed, out)) return true;  // axis_words.cpp
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
       if (!indexed || idx.size() != 1)
         raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
-      out = Value::real(data_.get(id, axisOf(idx[0])));
+      out = Value::real(data_.get(id, axisOf(idx[0], axes_)));
       return true;
     }
     if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
@@ -110,7 +106,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     if (!indexed || idx.size() != 1)
       raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
     out = Value::real((name == "$P_APR" ? motion_.approachPoints().apr
-                                        : motion_.approachPoints().aep)[axisOf(idx[0])]);
+                                        : motion_.approachPoints().aep)[axisOf(idx[0], axes_)]);
     return true;
   }
   if (name == "$P_APDV") {
@@ -129,7 +125,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
       return true;
     }
     if (idx.size() != 2) raise(AlarmNumber::ArrayIndex1, "$P_ACTFRAME needs [axis,component]");
-    int ax = axisOf(idx[0]);
+    int ax = axisOf(idx[0], axes_);
     std::string comp = lang::toText(idx[1]);
     out = comp == "MI" ? Value::integer(act.mirror[static_cast<size_t>(ax)] ? 1 : 0)
                        : Value::real(component(act, comp, ax));
@@ -137,7 +133,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
   }
   if (name == "$P_EP") {
     if (!indexed || idx.size() != 1) raise(AlarmNumber::ArrayIndex1, "$P_EP needs [axis]");
-    const int ax = axisOf(idx[0]);
+    const int ax = axisOf(idx[0], axes_);
     out = Value::real(readPosition(motion_.wcs()[ax], ax));  // a diameter under DIAMON/DIAM90
     return true;
   }
@@ -149,7 +145,7 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
     return true;
   }
   size_t base = idx.size() == 3 ? 1 : 0;
-  int ax = axisOf(idx[base]);
+  int ax = axisOf(idx[base], axes_);
   std::string comp = lang::toText(idx[base + 1]);
   out = comp == "MI" ? Value::integer(f->mirror[static_cast<size_t>(ax)] ? 1 : 0)
                      : Value::real(component(*f, comp, ax));
@@ -159,11 +155,12 @@ bool Interpreter::readSystem(std::string_view name, std::span<const Value> idx, 
 void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx, bool indexed,
                               const Value& v) {
   if (turningDataWrite(name, idx, indexed, v)) return;
+  if (axisDataWrite(name, idx, indexed, v)) return;  // axis_words.cpp
   if (int id = data_.find(name); id >= 0) {
     if (data_.isAxisData(id)) {
       if (!indexed || idx.size() != 1)
         raise(AlarmNumber::ArrayIndex1, fmt::format("{} needs [axis]", name));
-      data_.set(id, axisOf(idx[0]), lang::toNumber(v, "machine data"));
+      data_.set(id, axisOf(idx[0], axes_), lang::toNumber(v, "machine data"));
       return;
     }
     if (indexed) raise(AlarmNumber::ArrayIndex1, fmt::format("{} takes no index", name));
@@ -198,7 +195,7 @@ void Interpreter::writeSystem(std::string_view name, std::span<const Value> idx,
     *f = asFrame(v, name);
   } else {
     size_t base = idx.size() == 3 ? 1 : 0;
-    int ax = axisOf(idx[base]);
+    int ax = axisOf(idx[base], axes_);
     std::string comp = lang::toText(idx[base + 1]);
     double x = lang::toNumber(v, "frame component");
     if (!(std::fabs(x) <= 1e9) || ((comp == "RT" || comp == "SC") && !(std::fabs(x) <= 1e6)))
@@ -227,7 +224,7 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
     Frame f;
     Vec3 angles;
     for (size_t k = 0; k < args.size(); k += 2) {
-      int ax = axisOf(args[k]);
+      int ax = axisOf(args[k], axes_);
       double x = lang::toNumber(args[k + 1], "frame value");
       if (name == "CTRANS")
         f.coarse[ax] = toMm(x);
@@ -246,7 +243,7 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
   }
   if (name == "CMIRROR") {
     Frame f;
-    for (const auto& a : args) f.addMirror(axisOf(a));
+    for (const auto& a : args) f.addMirror(axisOf(a, axes_));
     return frameValue(f);
   }
   if (name == "MSG") {
@@ -277,9 +274,14 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
     raise(AlarmNumber::NotModelled,
           "SETTCOR (changing tool components, W1 2.10.6) is not modelled by ncoffset");
   if (Value out; predefinedCall(name, args, out)) return out;
+  // A subprogram returns no value (PROC has no result; FCTDEF polynomials serve synchronized
+  // actions only, PM-JP "Polynomial definition"): as a function in an expression its name is
+  // not defined (docs/language.md "Subprograms with parameters").
   if (programExists(name))
-    raise(AlarmNumber::NotModelled,
-          fmt::format("subprogram call {}(...) with parameters is not modelled by ncoffset", name));
+    raise(AlarmNumber::NameNotDefined,
+          fmt::format("name {} not defined as a function: {} is a subprogram, which returns no "
+                      "value (call it in a block of its own, results by VAR parameters)",
+                      name, name));
   raise(AlarmNumber::NameNotDefined,
         fmt::format("name {} not defined or option/function not available", name));
 }

@@ -64,7 +64,9 @@ struct Node {
 
 // X=AC(..), X=IC(..); X=DAC(..), DIC, RAC, RIC: absolute/incremental in diameter/radius for this
 // word only (PM-NC "Axis-specific diameter programming").
-enum class AxisMode : std::uint8_t { Default, AC, IC, DAC, DIC, RAC, RIC };
+// A=DC(..), ACP(..), ACN(..): absolute on a modulo rotary axis, shortest way / positive /
+// negative direction (PM-NC "Absolute dimensions for rotary axes").
+enum class AxisMode : std::uint8_t { Default, AC, IC, DAC, DIC, RAC, RIC, DC, ACP, ACN };
 
 enum class StmtKind : std::uint8_t {
   Word,      // address word: X10, X=R1, G1, M2=6, T="NAME", CR=5, DISC=50

@@ -239,8 +239,7 @@ constexpr PredefinedName kNames[] = {
     {"EXECTAB", NameClass::NotModelled, false, false, false,
      "runs a table of contour elements: not modelled yet"},
     {"FA", NameClass::NoPathEffect, false, false, false,
-     "feed of a positioning axis; positioning axes other than X, Y, Z are not modelled (99010 when "
-     "one moves)"},
+     "feed of a positioning axis: changes when it arrives, not where (docs/language.md \"Axes\")"},
     {"FCUB", NameClass::NoPathEffect, false, false, false,
      "feed profile over the block: changes how fast the path is travelled (acceleration, jerk, "
      "feed profile), not where"},
@@ -324,10 +323,12 @@ constexpr PredefinedName kNames[] = {
     {"POCKET4", NameClass::NotModelled, false, false, true,
      "a Siemens standard cycle (circular pocket): its program computes the path, ncoffset does not "
      "model it; a POCKET4.SPF on the search path runs instead"},
-    {"POS", NameClass::NotModelled, false, false, false,
-     "positioning axis motion: axes other than X, Y, Z are not modelled"},
-    {"POSA", NameClass::NotModelled, false, false, false,
-     "positioning axis motion over block limits: not modelled"},
+    {"POS", NameClass::Modelled, false, false, false,
+     "positioning axis motion POS[ax]=: the end position as an axis word of the block "
+     "(docs/language.md \"Axes\")"},
+    {"POSA", NameClass::Modelled, false, false, false,
+     "positioning axis motion over block limits POSA[ax]=: the end position as an axis word of "
+     "the block (when it is reached is not modelled)"},
     {"PRESETON", NameClass::NotModelled, false, false, false,
      "sets the actual value of an axis (a new machine coordinate): not modelled"},
     {"PRIO", NameClass::NoPathEffect, false, false, false,

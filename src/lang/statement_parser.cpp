@@ -182,20 +182,29 @@ void Parser::addWord(std::string_view address, int ext, int value, int col, bool
   st.expr = value;
   // X=AC(..) / X=IC(..): absolute or incremental dimension for this word only.
   const Node& v = b_.node(value);
-  if (v.kind == NodeKind::Call && (v.text == "AC" || v.text == "IC" || v.text == "DAC" ||
-                                   v.text == "DIC" || v.text == "RAC" || v.text == "RIC")) {
+  if (v.kind == NodeKind::Call &&
+      (v.text == "AC" || v.text == "IC" || v.text == "DAC" || v.text == "DIC" || v.text == "RAC" ||
+       v.text == "RIC" || v.text == "DC" || v.text == "ACP" || v.text == "ACN")) {
     if (v.b != 1) syntax(std::string(v.text) + " takes one value");
-    // Diameter/radius for one word: axes only (PM-NC "Axis-specific diameter programming").
-    const bool diameter_mode = v.text[0] == 'D' || v.text[0] == 'R';
-    if (diameter_mode &&
-        (address.size() != 1 || address[0] == 'I' || address[0] == 'J' || address[0] == 'K'))
+    // Diameter/radius and DC/ACP/ACN for one word: axes only (PM-NC "Axis-specific diameter
+    // programming", "Absolute dimensions for rotary axes"); a longer name (an axis X1, or CR=)
+    // is checked by the interpreter, which knows the axis names.
+    // An axis name of several characters carries a digit (X1, AX4); CR=, DISR= are no axes.
+    const bool axis_mode = v.text != "AC" && v.text != "IC";
+    const bool axis_name = address.size() == 1
+                               ? address[0] != 'I' && address[0] != 'J' && address[0] != 'K'
+                               : address.find_first_of("0123456789") != std::string_view::npos;
+    if (axis_mode && !axis_name)
       syntax(std::string(v.text) + " only with an axis, not with " + std::string(address));
     st.mode = v.text == "AC"    ? AxisMode::AC
               : v.text == "IC"  ? AxisMode::IC
               : v.text == "DAC" ? AxisMode::DAC
               : v.text == "DIC" ? AxisMode::DIC
               : v.text == "RAC" ? AxisMode::RAC
-                                : AxisMode::RIC;
+              : v.text == "RIC" ? AxisMode::RIC
+              : v.text == "DC"  ? AxisMode::DC
+              : v.text == "ACP" ? AxisMode::ACP
+                                : AxisMode::ACN;
     st.expr = b_.arg(v, 0);
   }
   b_.stmts.push_back(st);

@@ -146,12 +146,15 @@ bool stringFunction(std::string_view name, std::span<const Value> args, Value& o
     out = Value::string(args[0].str);
   } else if (name == "AXNAME") {
     want(name, args, 1, 1);
-    const std::string s = text(name, args[0]);
-    if (s != "X" && s != "Y" && s != "Z")
-      raise(AlarmNumber::NotModelled,
-            fmt::format("AXNAME(\"{}\"): axis {} is not modelled by ncoffset (geometry axes X, Y, "
-                        "Z only)",
-                        s, s));
+    // Any axis name (docs/language.md "Axes"): whether the channel has it is checked where the
+    // AXIS value is used ($AA_IW[..], AX[..]=), which knows the channel's axes.
+    std::string s = text(name, args[0]);
+    for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    bool ok = !s.empty() && s.size() <= 8 && std::isalpha(static_cast<unsigned char>(s[0]));
+    for (char c : s) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+    if (!ok)
+      raise(AlarmNumber::NameNotDefined,
+            fmt::format("AXNAME(\"{}\"): \"{}\" is no axis name", s, s));
     out = {Type::Axis, 0, s, {}};
   } else {
     return false;

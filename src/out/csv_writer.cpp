@@ -28,7 +28,7 @@ void CsvWriter::segment(const Segment& s) {
   // made first, the unused part is cut off after the row.
   auto& b = w_.buf();
   const size_t used = b.size();
-  b.resize(used + kMaxRow);
+  b.resize(used + kMaxRow + axis_room_);
   char* const row = b.data() + used;
   char* p = s.line >= 0 ? writeUnsigned(row, static_cast<unsigned>(s.line))
                         : std::to_chars(row, row + 11, s.line).ptr;
@@ -54,6 +54,8 @@ void CsvWriter::segment(const Segment& s) {
   }
   *p++ = ',';
   if (s.has_feed) p = writeShortest(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
+  if (axis_room_) [[unlikely]]
+    p = writeAxes(p);
   *p++ = '\n';
   b.resize(used + static_cast<size_t>(p - row));
   w_.lineDone();
@@ -61,6 +63,28 @@ void CsvWriter::segment(const Segment& s) {
 
 void CsvWriter::finish(const Alarm*) {
   w_.flush();
+}
+
+bool extendCsvHeader(BufferedWriter& w, AxisColumns& axes, const std::vector<std::string>& names) {
+  auto& b = w.buf();
+  const std::string_view header(kHeader);
+  if (w.wrote() || b.size() != header.size()) return false;  // rows of an init file: keep them
+  axes.announce(names);
+  b.clear();
+  fmt::format_to(fmt::appender(b), "{}{}\n", header.substr(0, header.size() - 1), axes.header());
+  return true;
+}
+
+void CsvWriter::axisNames(const std::vector<std::string>& names) {
+  if (extendCsvHeader(w_, axes_, names)) axis_room_ = 33 * names.size();
+}
+
+char* CsvWriter::writeAxes(char* p) const {
+  for (double v : axes_.positions) {
+    *p++ = ',';
+    p = writeShortest(p, v + 0.0);
+  }
+  return p;
 }
 
 RoundedCsvWriter::RoundedCsvWriter(std::FILE* f, int decimals) : w_(f), decimals_(decimals) {
@@ -84,8 +108,13 @@ void RoundedCsvWriter::segment(const Segment& s) {
   }
   *p++ = ',';
   if (s.has_feed) p = writeRounded(p, s.feed, decimals_);
-  *p++ = '\n';
   w_.buf().append(row, p);
+  for (double v : axes_.positions) {  // the additional axes (none: no loop)
+    char field[kRoundedRoom + 1];
+    field[0] = ',';
+    w_.buf().append(field, writeRounded(field + 1, v + 0.0, decimals_));
+  }
+  w_.buf().push_back('\n');
   w_.lineDone();
 }
 

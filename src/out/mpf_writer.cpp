@@ -122,6 +122,10 @@ void MpfWriter::block(const Segment& s, Motion motion, Vec3 end) {
     append(b, axis[i]);
     appendNcNumber(b, end[i], decimals_);
   }
+  for (size_t k = 0; k < axes_.names.size(); ++k) {  // the additional axes
+    fmt::format_to(fmt::appender(b), " {}=", axes_.names[k]);
+    appendNcNumber(b, axes_.positions[k], decimals_);
+  }
   if (motion == Motion::G2 || motion == Motion::G3) {
     // The centre in the plane's two axes, absolute; the applicate travel is in the end point.
     const char* centre[3] = {" I=AC(", " J=AC(", " K=AC("};

@@ -27,8 +27,12 @@ class MpfWriter final : public PathSink {
   void warning(const SourceLoc& where, int number, const std::string& text) override;
   // `; ALARM N at FILE:LINE: TEXT`, M0 and M30, or M30. Later calls do nothing.
   void finish(const Alarm* alarm) override;
+  // The additional axes: `A=90` words in every motion block (docs/output-formats.md).
+  void axisNames(const std::vector<std::string>& names) override { axes_.announce(names); }
+  void axes(const AxesEvent& e) override { axes_.set(e); }
 
  private:
+  AxisColumns axes_;
   void block(const Segment& s, Motion motion, Vec3 end);
   void feedWord(const Segment& s);  // the F word, when it changed
   void threadLead(const Segment& s);

@@ -38,6 +38,15 @@ void JsonLinesWriter::segment(const Segment& s) {
                    feedUnitName(s.feed_unit));
   if (s.motion == Motion::G34 || s.motion == Motion::G35)  // feed: the start lead (mm/rev)
     fmt::format_to(it, ",\"lead_change\":{}", Number{s.lead_change, d});
+  if (!axes_.empty()) {  // the additional axes: "axes":{"A":90,...} (docs/output-formats.md)
+    fmt::format_to(it, ",\"axes\":{{");
+    for (size_t k = 0; k < axes_.names.size(); ++k) {
+      if (k) b.push_back(',');
+      appendJsonString(b, axes_.names[k]);
+      fmt::format_to(it, ":{}", Number{axes_.positions[k] + 0.0, d});
+    }
+    b.push_back('}');
+  }
   fmt::format_to(it, "}}\n");
   w_.lineDone();
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "ncoffset/path.hpp"
+#include "out/axis_columns.hpp"
 
 namespace ncoffset::out {
 
@@ -21,6 +22,7 @@ class BufferedWriter {
   ~BufferedWriter() { flush(); }
   void flush() {
     if (!buf_.size()) return;
+    wrote_ = true;
     std::fwrite(buf_.data(), 1, buf_.size(), f_);
     buf_.clear();
     std::fflush(f_);
@@ -28,14 +30,18 @@ class BufferedWriter {
   // Flushes whole lines only, once the buffer is large.
   void lineDone() {
     if (buf_.size() >= 1 << 16) {
+      wrote_ = true;
       std::fwrite(buf_.data(), 1, buf_.size(), f_);
       buf_.clear();
     }
   }
   fmt::memory_buffer& buf() { return buf_; }
+  // Whether anything reached the file (a header can no longer change).
+  bool wrote() const { return wrote_; }
 
  private:
   std::FILE* f_;
+  bool wrote_ = false;
   fmt::memory_buffer buf_;
 };
 
@@ -45,10 +51,20 @@ class CsvWriter final : public PathSink {
   explicit CsvWriter(std::FILE* f);
   void segment(const Segment& s) override;
   void finish(const Alarm* alarm) override;
+  // The additional axes: columns after feed (docs/output-formats.md).
+  void axisNames(const std::vector<std::string>& names) override;
+  void axes(const AxesEvent& e) override { axes_.set(e); }
 
  private:
+  char* writeAxes(char* p) const;
   BufferedWriter w_;
+  AxisColumns axes_;
+  size_t axis_room_ = 0;  // characters the axis fields of a row may take
 };
+
+// Puts the additional axes' names into a CSV header still in `w`'s buffer (false: the header
+// was written already, or rows follow it).
+bool extendCsvHeader(BufferedWriter& w, AxisColumns& axes, const std::vector<std::string>& names);
 
 // The same columns with numbers of at most `decimals` (0..17) decimals (--decimals,
 // shortest_number.hpp writeRounded). A class of its own: CsvWriter's row stays as it is.
@@ -57,9 +73,14 @@ class RoundedCsvWriter final : public PathSink {
   RoundedCsvWriter(std::FILE* f, int decimals);
   void segment(const Segment& s) override;
   void finish(const Alarm* alarm) override;
+  void axisNames(const std::vector<std::string>& names) override {
+    extendCsvHeader(w_, axes_, names);
+  }
+  void axes(const AxesEvent& e) override { axes_.set(e); }
 
  private:
   BufferedWriter w_;
+  AxisColumns axes_;
   int decimals_;
 };
 
@@ -79,8 +100,11 @@ class JsonLinesWriter final : public PathSink {
   void feed(const FeedEvent& e) override;
   void frame(const FrameEvent& e) override;
   void finish(const Alarm* alarm) override;
+  void axisNames(const std::vector<std::string>& names) override { axes_.announce(names); }
+  void axes(const AxesEvent& e) override { axes_.set(e); }
 
  private:
+  AxisColumns axes_;
   // `{"type":"<type>","line":L,"file":"F"` of an event record.
   void eventHead(const char* type, int line, int file);
   BufferedWriter w_;

@@ -51,6 +51,8 @@ class MessagePrinter final : public ncoffset::PathSink {
   void spindle(const ncoffset::SpindleEvent& e) override { next_.spindle(e); }
   void feed(const ncoffset::FeedEvent& e) override { next_.feed(e); }
   void frame(const ncoffset::FrameEvent& e) override { next_.frame(e); }
+  void axisNames(const std::vector<std::string>& n) override { next_.axisNames(n); }
+  void axes(const ncoffset::AxesEvent& e) override { next_.axes(e); }
   void finish(const ncoffset::Alarm* alarm) override { next_.finish(alarm); }
 
  private:
