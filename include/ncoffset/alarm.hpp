@@ -81,10 +81,10 @@ enum class AlarmNumber : int {
   CarrierKind = 14153,         // toolholder: unknown kinematic type ($TC_CARR23)
   IllegalDef = 14500,          // DEF after the first statement
   NoTransverseAxis = 16510,    // diameter programming without a transverse axis (MD20100)
-  DcNotAllowed = 16800,       // DC for an axis that is no modulo rotary axis
-  AcpNotAllowed = 16810,      // ACP for an axis that is no modulo rotary axis
-  AcnNotAllowed = 16820,      // ACN for an axis that is no modulo rotary axis
-  ModuloPosition = 16830,     // DC/ACP/ACN position outside 0 <= value < 360
+  DcNotAllowed = 16800,        // DC for an axis that is no modulo rotary axis
+  AcpNotAllowed = 16810,       // ACP for an axis that is no modulo rotary axis
+  AcnNotAllowed = 16820,       // ACN for an axis that is no modulo rotary axis
+  ModuloPosition = 16830,      // DC/ACP/ACN position outside 0 <= value < 360
   ArrayIndex1 = 17020,         // array index 1 out of range
   ArrayIndex2 = 17030,         // array index 2 out of range
   EdgeNotExisting = 17181,     // T no., D no. not existing

@@ -19,9 +19,9 @@ double Interpreter::toMm(double v) const {
   return interp::toMm(modal_, v);
 }
 
-void Interpreter::finishBlock() {
-  // An alarm of the block as a whole points at its first word.
-  column_ = block_.stmts.empty() ? 0 : block_.stmts.front().column;
+// The block's frame words: G54.., TRANS/ROT/.. and G58/G59, G25/G26. True when they took the
+// block's axis values (they are no motion target then).
+bool Interpreter::blockFrames() {
   bool frames_changed = false;
   if (words_.frame_select) {
     int n = modal_.frame_select == 500  ? 0
@@ -50,6 +50,13 @@ void Interpreter::finishBlock() {
     axes_consumed = true;  // G25/G26 axis values are working-area limits, not targets
   }
   if (frames_changed) frames_.update();
+  return axes_consumed;
+}
+
+void Interpreter::finishBlock() {
+  // An alarm of the block as a whole points at its first word.
+  column_ = block_.stmts.empty() ? 0 : block_.stmts.front().column;
+  const bool axes_consumed = blockFrames();
   executeToolWords();
   if (carrier_.pending) executeCarrierWords();  // TCARR, TCOFR, PAROT, TOROT ... (rare)
   if (words_.rpl && words_.frame_command.empty())
@@ -67,8 +74,7 @@ void Interpreter::finishBlock() {
     threadLeadWords();  // I, J, K of a thread (threads.cpp); else the circle alarm
   // A circle may consist of its centre alone (full circle) or of AR= with the centre.
   bool moved = false;
-  const bool geometry =
-      any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None;
+  const bool geometry = any_axis || (is_arc && circle_words) || words_.sar != core::SarKind::None;
   bool builds = !axes_consumed && geometry;
   // Contour definitions, CIP/CT, polar coordinates (contour_definition.cpp): only blocks with
   // such words, or while RNDM/CIP/CT/an ANG block is active.

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/stage.hpp"
-#include "interp/contour_state.hpp"
 #include "interp/channel_axes.hpp"
+#include "interp/contour_state.hpp"
 #include "interp/frame_state.hpp"
 #include "interp/loop_watch.hpp"
 #include "interp/machine_data.hpp"
@@ -158,6 +158,7 @@ class Interpreter final : public lang::Environment {
   void gNotModelled(int g);
   void setSar(core::SarKind kind);
   void finishBlock();
+  bool blockFrames();  // the frame words of the block; true when they took its axis values
   void doFrameCommand();
   double toMm(double v) const;
 

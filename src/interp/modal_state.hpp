@@ -53,10 +53,10 @@ struct ModalState {
   int exact_stop = 64;                             // group 10: G60/G64/G641..
   double feed = 0;                                 // F in mm/min (G94) as the control holds it
   Vec3 thread_lead;  // the last lead I, J, K of a G33..G332 block, mm/rev (docs/threads.md)
-  double disc = 0;                                 // DISC=
-  double offn = 0;                                 // OFFN=
-  int tool = 0;                                    // T
-  int edge = 0;                                    // D
+  double disc = 0;   // DISC=
+  double offn = 0;   // OFFN=
+  int tool = 0;      // T
+  int edge = 0;      // D
 };
 
 // Words of one block, collected before execution (their order inside a block does not matter
@@ -91,7 +91,7 @@ struct BlockWords {
   core::SarKind sar = core::SarKind::None;        // G147..G348 (smooth approach / retraction)
   std::optional<double> disr, discl, disrp, fad;  // SAR parameters (mm)
   bool discl_ac = false, disrp_ac = false;
-  bool contour = false;  // a contour-definition word (CHF=, RND=, ANG=, AP=, CIP, G110, ...)
+  bool contour = false;     // a contour-definition word (CHF=, RND=, ANG=, AP=, CIP, G110, ...)
   bool extra_axes = false;  // words of additional axes (ChannelAxes holds them; in the padding)
   int column = 0;
 

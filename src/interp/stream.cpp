@@ -41,8 +41,7 @@ struct AxisNames {
   std::vector<std::string> names;
 };
 using Record = std::variant<Segment, Programmed, Message, Warning, ToolEvent, MFunctionEvent,
-                            DwellEvent, SpindleEvent, FeedEvent, FrameEvent, AxesEvent,
-                            AxisNames>;
+                            DwellEvent, SpindleEvent, FeedEvent, FrameEvent, AxesEvent, AxisNames>;
 }  // namespace
 
 struct Stream::Impl {

@@ -78,9 +78,14 @@ void HtmlReport::writeSummary(const Alarm* alarm) {
     append(b, ">ran to the end");
   }
   append(b, "</td></tr>\n");
-  long long total = counts_[0] + counts_[1] + counts_[2] + counts_[3];
-  fmt::format_to(it, "<tr><th>segments</th><td>{} (G0 {}, G1 {}, G2 {}, G3 {})</td></tr>\n", total,
-                 counts_[0], counts_[1], counts_[2], counts_[3]);
+  long long total = 0;
+  for (long long c : counts_) total += c;
+  fmt::format_to(it, "<tr><th>segments</th><td>{} (G0 {}, G1 {}, G2 {}, G3 {}", total, counts_[0],
+                 counts_[1], counts_[2], counts_[3]);
+  for (size_t k = 4; k < counts_.size(); ++k)  // thread and tapping lines, where there are any
+    if (counts_[k] > 0)
+      fmt::format_to(it, ", {} {}", motionName(static_cast<Motion>(k)), counts_[k]);
+  append(b, ")</td></tr>\n");
   fmt::format_to(it,
                  "<tr><th>path length rapid (G0)</th><td class=\"n\">{:.3f} mm</td></tr>\n"
                  "<tr><th>path length at feed</th><td class=\"n\">{:.3f} mm</td></tr>\n",

@@ -23,6 +23,7 @@ const RUNS = {
   "frames.MPF": ["--init", "frames.INI"],
   "lentoax.MPF": ["--init", "tools.INI"],
   "pocket.MPF": ["--init", "tools.INI"],
+  "swivel_head.MPF": ["--init", "swivel_head.INI"],
   "lathe.MPF": ["--init", "lathe.INI", "--init", "lathe_tools.INI", "--view", "zx"],
 };
 

@@ -16,10 +16,10 @@ TEST(PredefinedNames, FindsExactNamesAndFamilies) {
   const PredefinedName* soft_a = findPredefinedName("SOFTA");
   ASSERT_NE(soft_a, nullptr);
   EXPECT_EQ(soft_a->cls, NameClass::NoPathEffect);
-  const PredefinedName* tcarr = findPredefinedName("TCARR");
-  ASSERT_NE(tcarr, nullptr);
-  EXPECT_EQ(tcarr->cls, NameClass::NotModelled);
-  EXPECT_TRUE(tcarr->zero_accepted);
+  const PredefinedName* tofflr = findPredefinedName("TOFFLR");
+  ASSERT_NE(tofflr, nullptr);
+  EXPECT_EQ(tofflr->cls, NameClass::NotModelled);
+  EXPECT_TRUE(tofflr->zero_accepted);
   const PredefinedName* toffl = findPredefinedName("TOFFL");  // a reserved name with code
   ASSERT_NE(toffl, nullptr);
   EXPECT_EQ(toffl->cls, NameClass::Modelled);

@@ -84,7 +84,7 @@ struct Args {
   int decimals = -1;              // --decimals: -1 the shortest round-trip text
   bool diameter = false;
   bool quiet = false;  // -q: no progress line
-  std::string start;  // --start X,Y,Z (empty: machine zero, assumed)
+  std::string start;   // --start X,Y,Z (empty: machine zero, assumed)
 };
 
 // What the HTML report reads from the channel: the files of the run, the offset memory and the
