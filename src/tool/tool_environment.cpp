@@ -54,8 +54,8 @@ int parseComponents(const std::string& text, Components& c) {
   return 0;
 }
 
-// The edge with only the components asked for: the others zeroed. Sum and setup offsets are
-// not in the offset memory of this build (docs/tool-offsets.md section 14).
+// The edge with only the components asked for: the others zeroed (the sum and setup offsets
+// are added by the caller, docs/tool-offsets.md section 14).
 EdgeData selectComponents(const EdgeData& e, const Components& c) {
   EdgeData out = e;
   for (size_t k = 0; k < 3; ++k) {
@@ -95,6 +95,7 @@ ToolEnvironment ToolSelection::currentEnvironment(const ToolSettings& s, Plane p
   }
   env.t = active_tool_;
   env.d = active_edge_;
+  env.dl = active_dl_;
   return env;
 }
 
@@ -106,11 +107,20 @@ int ToolSelection::toolCorrection(std::span<Value> len, const std::string& comp,
   if (env.t < 0 || env.t > kMaxTool || (!dconf_.flat && env.t != 0 && !tools_.tool(env.t)))
     return -4;
   if (env.d < 0 || env.d > dconf_.max_d) return -5;
-  if (env.dl != 0) return -6;  // no sum or setup offsets in this build
+  if (env.dl < 0 || env.dl > sum_limits_.max_per_edge) return -6;
   if (env.d == 0 || (!dconf_.flat && env.t == 0)) return 0;  // no offset: all zero [D]
   const EdgeData* e = tools_.edge(dconf_.flat ? 0 : env.t, env.d);
   if (!e) return -5;
-  const EdgeData sel = selectComponents(*e, c);
+  EdgeData sel = selectComponents(*e, c);
+  if (env.dl > 0) {  // S and E: the DL's sets are wear DP12..DP20 (section 10)
+    const int t = dconf_.flat ? 0 : env.t;
+    if (!sums_.exists(t, env.d, env.dl)) return -6;
+    for (bool setup : {false, true}) {
+      const SumOffsetMemory::Set* set = sums_.find(setup, t, env.d, env.dl);
+      if (!set || !(setup ? c.setup && sum_limits_.setup_offsets : c.sum)) continue;
+      for (size_t k = 0; k < set->size(); ++k) sel.dp[12 + k] += (*set)[k];
+    }
+  }
   const EffectiveLengths l = ncoffset::effectiveLengths(sel, env.settings);
   Vec3 v = ncoffset::lengthVector(sel, env.settings, env.plane, env.mirrored);
   if (c.coord == 'W') v = env.orientation * v;
