@@ -107,6 +107,11 @@ void HtmlReport::tool(const ToolEvent& e) {
   tool_slot_ = slot;
 }
 
+void HtmlReport::frame(const FrameEvent& e) {
+  if (finished_ || frames_.size() >= kMaxFrames) return;
+  frames_.push_back({output_.size(), e.map.offset});
+}
+
 void HtmlReport::finish(const Alarm* alarm) {
   if (finished_) return;
   for (const Segment& p : held_) programmed_.add(p, tool_slot_);

@@ -54,6 +54,7 @@ class HtmlReport final : public PathSink {
   bool wantsProgrammed() const override { return true; }
   bool wantsEvents() const override { return true; }
   void tool(const ToolEvent& e) override;
+  void frame(const FrameEvent& e) override;  // where the WCS origin is (drawn in MCS)
   void dwell(const DwellEvent& e) override { time_.dwell(e); }
   void spindle(const SpindleEvent& e) override { time_.spindle(e); }
   // The start position is assumed (no --start): the first move is neither drawn nor in the
@@ -112,6 +113,14 @@ class HtmlReport final : public PathSink {
   std::vector<ToolSlot> tools_;
   int tool_slot_ = -1;
   std::vector<ToolChange> changes_;
+  // The WCS origin (BCS point of WCS zero) from the segment on, per frame change (the first
+  // kMaxFrames; docs/output-formats.md "HTML").
+  struct FrameMark {
+    long long segment;
+    Vec3 origin;
+  };
+  static constexpr size_t kMaxFrames = 10000;
+  std::vector<FrameMark> frames_;
   std::deque<Segment> held_;  // programmed segments not yet written (at most kHeld)
   static constexpr size_t kHeld = 64;
 };

@@ -218,6 +218,11 @@ void HtmlReport::writeData(const Alarm* alarm) {
   append(b, "],\"changes\":[");
   for (size_t i = 0; i < changes_.size(); ++i)
     fmt::format_to(it, "{}[{},{}]", i ? "," : "", changes_[i].segment, changes_[i].slot);
+  append(b, "],\n\"frames\":[");
+  for (size_t i = 0; i < frames_.size(); ++i)
+    fmt::format_to(it, "{}[{},{},{},{}]", i ? "," : "", frames_[i].segment,
+                   Number{frames_[i].origin.x + 0.0}, Number{frames_[i].origin.y + 0.0},
+                   Number{frames_[i].origin.z + 0.0});
   append(b, "],\n\"notes\":[");
   for (size_t i = 0; i < notes_.size(); ++i) {
     const Note& n = notes_[i];

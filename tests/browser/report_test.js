@@ -87,6 +87,8 @@ async function testReport(context, name, html, expectMs) {
   const mode = await page.evaluate(() => document.getElementById("nco-svg").dataset.mode);
   check(`${name}: every drawn segment has data-line and data-file`, await page.evaluate(() =>
     [...document.querySelectorAll("#nco-out path, #nco-prog path")].every((e) => e.dataset.line && e.dataset.file)));
+  check(`${name}: the WCS origin is marked in an MCS drawing`, await page.evaluate(() =>
+    NCO.data.coords === "wcs" || document.querySelector("#nco-svg g.origin.wcs") !== null));
   check(`${name}: every program line has data-line and data-file`, await page.evaluate(() =>
     document.querySelectorAll(".ln").length > 0 &&
     [...document.querySelectorAll(".ln")].every((e) => e.dataset.line && e.dataset.file)));

@@ -102,5 +102,15 @@ NCO.drawAxes = function (g) {
        " " + OY + "h20M" + OX + " " + (OY - 10) + 'v20"/></g>';
   s += '<text x="' + (OX + 8) + '" y="' + (OY + 14) + '">' +
        (NCO.data.coords === "wcs" ? "WCS origin" : "MCS origin") + "</text>";
+  // In MCS: the WCS origin of the frame in force at the selected block (or at the start).
+  if (NCO.data.coords !== "wcs") {
+    const at = NCO.state.sel && NCO.state.sel.focus >= 0 ? NCO.state.sel.focus : 0;
+    let w = [0, 0, 0];
+    for (const f of NCO.data.frames || []) if (f[0] <= at) w = [f[1], f[2], f[3]];
+    const p = NCO.project(view, w[0], w[1], w[2], [0, 0]);
+    const WX = p[0] * T.k + T.tx, WY = -p[1] * T.k + T.ty;
+    s += '<g class="origin wcs"><rect x="' + (WX - 5) + '" y="' + (WY - 5) + '" width="10" height="10"/></g>';
+    s += '<text x="' + (WX + 8) + '" y="' + (WY - 6) + '">WCS origin</text>';
+  }
   g.innerHTML = s;
 };
