@@ -221,6 +221,7 @@ class Interpreter final : public lang::Environment {
   void toolholderNumber(double m);  // TCARR=m
   bool toolholderNamedWord(std::string_view w);
   void executeCarrierWords();
+  std::array<double, 2> carrierAxisAngles(int m) const;
   Mat3 toolFrameRotation(ToolFrame variant) const;
   bool readCarrier(std::string_view name, std::span<const lang::Value> idx, bool indexed,
                    lang::Value& out);

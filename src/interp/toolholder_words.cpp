@@ -63,6 +63,20 @@ bool Interpreter::toolholderNamedWord(std::string_view w) {
   return true;
 }
 
+// The machine positions of the rotary axes holder m names in $TC_CARR21/22, where they are
+// axes an init file configures for the channel (docs/toolholders.md "Angles"); NaN otherwise
+// (a manual head, or an axis of the default channel that no program can move: $TC_CARR13/14).
+std::array<double, 2> Interpreter::carrierAxisAngles(int m) const {
+  std::array<double, 2> out{tool::ToolCarriers::kNoAxis, tool::ToolCarriers::kNoAxis};
+  const std::array<std::string, 2> names = carriers_.axisNames(m);
+  for (size_t i = 0; i < 2; ++i) {
+    if (names[i].empty()) continue;
+    const int k = axes_.find(names[i], false);
+    if (k >= 0 && axes_.axes()[static_cast<size_t>(k)].output) out[i] = axes_.mcs(k);
+  }
+  return out;
+}
+
 void Interpreter::executeCarrierWords() {
   CarrierState& c = carrier_;
   c.pending = false;
@@ -70,8 +84,8 @@ void Interpreter::executeCarrierWords() {
   if (c.programmed_number >= 0 || (c.mode_changed && c.number > 0)) {
     if (c.programmed_number >= 0) c.number = c.programmed_number;
     carriers_.setCount(static_cast<int>(data_.get(md_carriers_)));
-    c.pose =
-        carriers_.pose(c.number, c.mode, frames_.map().linear, data_.get(sd_carrier_fine_) != 0);
+    c.pose = carriers_.pose(c.number, c.mode, frames_.map().linear,
+                            data_.get(sd_carrier_fine_) != 0, carrierAxisAngles(c.number));
     tools_.setCarrier(c.pose.tool_rotation, c.pose.tool_offset, c.number > 0);
     // Types P and M: the table offset as the system frame $P_PARTFR (W1 2.5.4, MD28082 bit 2).
     frames_.partFrame() = Frame{};

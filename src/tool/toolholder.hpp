@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <map>
 #include <span>
 #include <string>
@@ -68,7 +69,13 @@ class ToolCarriers {
   // The pose of holder m (TCARR=m; m = 0: the identity). `frame_linear` is the active frame's
   // linear part (TCOFR), `fine` SD42974 $SC_TOCARR_FINE_CORRECTION. Alarms 14150 (m beyond
   // MD18088), 14153 (unknown kinematic type), 14152 (TCOFR: no angles give the orientation).
-  CarrierPose pose(int m, CarrierAngles mode, const Mat3& frame_linear, bool fine) const;
+  // `axis_angles`: the positions of the rotary axes $TC_CARR21/22 names where the channel has
+  // them (NaN where not: then $TC_CARR13/14, W1 "the angles of a manual holder").
+  CarrierPose pose(int m, CarrierAngles mode, const Mat3& frame_linear, bool fine,
+                   std::array<double, 2> axis_angles = {kNoAxis, kNoAxis}) const;
+  static constexpr double kNoAxis = std::numeric_limits<double>::quiet_NaN();
+  // The names $TC_CARR21/22 of holder m ("" where none).
+  std::array<std::string, 2> axisNames(int m) const;
 
  private:
   const CarrierData& data(int m) const;

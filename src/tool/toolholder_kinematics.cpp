@@ -176,8 +176,13 @@ void frameAngles(const CarrierData& d, const Axes& ax, char kind, Vec3 f, Carrie
 
 }  // namespace
 
-CarrierPose ToolCarriers::pose(int m, CarrierAngles mode, const Mat3& frame_linear,
-                               bool fine) const {
+std::array<std::string, 2> ToolCarriers::axisNames(int m) const {
+  if (m < 1 || m > count_) return {};
+  return {data(m).axis1, data(m).axis2};
+}
+
+CarrierPose ToolCarriers::pose(int m, CarrierAngles mode, const Mat3& frame_linear, bool fine,
+                               std::array<double, 2> axis_angles) const {
   CarrierPose pose;
   if (m == 0) return pose;
   if (m < 0 || m > count_)
@@ -194,8 +199,9 @@ CarrierPose ToolCarriers::pose(int m, CarrierAngles mode, const Mat3& frame_line
   pose.kind = d.kind;
   Axes ax{vec(d, 7, false, 0), vec(d, 10, false, 0), d.num[24] + (fine ? d.num[64] : 0.0),
           d.num[25] + (fine ? d.num[65] : 0.0)};
-  pose.angle1 = d.num[13];
-  pose.angle2 = d.num[14];
+  // A rotary axis of the channel gives its position; a holder without one its $TC_CARR13/14.
+  pose.angle1 = std::isnan(axis_angles[0]) ? d.num[13] : axis_angles[0];
+  pose.angle2 = std::isnan(axis_angles[1]) ? d.num[14] : axis_angles[1];
   if (mode != CarrierAngles::Absolute) {
     const int col = mode == CarrierAngles::FrameZ ? 2 : mode == CarrierAngles::FrameY ? 1 : 0;
     const Vec3 f{frame_linear.m[0][static_cast<size_t>(col)],
