@@ -45,6 +45,8 @@ constexpr DataSpec kTable[] = {
     {20121, "TOOL_PRESEL_RESET_VALUE", C::ChannelMd, 0, true, 0, kBig, false,
      "preselected tool at reset"},
     {20130, "CUTTING_EDGE_RESET_VALUE", C::ChannelMd, 0, true, 0, kBig, false, "edge at reset"},
+    {20184, "TOCARR_BASE_FRAME_NUMBER", C::ChannelMd, -1, true, -1, -1, true,
+     "table offset of a P/M toolholder in $P_PARTFR (MD28082 bit 2), not in a base frame"},
     {20202, "WAB_MAXNUM_DUMMY_BLOCKS", C::ChannelMd, 5, true, 0, 1000, false,
      "SAR: blocks without motion"},
     {20204, "WAB_CLEARANCE_TOLERANCE", C::ChannelMd, 0.01, false, 0, kBig, false,
@@ -72,6 +74,8 @@ constexpr DataSpec kTable[] = {
      "circle end point tolerance factor"},
     {21080, "CUTCOM_PARALLEL_ORI_LIMIT", C::ChannelMd, 0, false, 0, 180, false,
      "TRC parallel orientation"},
+    {21186, "TOCARR_ROT_OFFSET_FROM_FR", C::ChannelMd, 0, true, 0, 0, true,
+     "toolholder rotary axis offsets from $TC_CARR24/25, not from the work offset"},
     {22550, "TOOL_CHANGE_MODE", C::ChannelMd, 0, true, 0, 1, false, "0: T changes, 1: M6 changes"},
     {22560, "TOOL_CHANGE_M_CODE", C::ChannelMd, 6, true, 0, 99999, false,
      "M code of the tool change"},
@@ -109,6 +113,8 @@ constexpr DataSpec kTable[] = {
      "temperature compensation not modelled"},
     {42974, "TOCARR_FINE_CORRECTION", C::ChannelSd, 0, true, 0, 1, false,
      "1: the toolholder's fine offsets $TC_CARR41..65 count"},
+    {42980, "TOFRAME_MODE", C::ChannelSd, 0, true, 0, 0, true,
+     "TOFRAME as TOROT (docs/toolholders.md)"},
 };
 
 }  // namespace
