@@ -72,6 +72,16 @@ bool Interpreter::axesBlock(bool consumed, bool geometry_motion) {
                                 : axes_.wcs(static_cast<int>(k), settableIndex()));
   axes_.clearWords();
   sink_.axes(e);
+  // TCOABS with a holder whose angles are channel axes: the tool length follows their position
+  // at the start of the next block (W1 2.5.4 "the axis position ... at the start of the current
+  // block is used").
+  const auto angles =
+      carrier_.number > 0 ? carrierAxisAngles(carrier_.number) : std::array<double, 2>{NAN, NAN};
+  if (carrier_.mode == tool::CarrierAngles::Absolute &&
+      (!std::isnan(angles[0]) || !std::isnan(angles[1]))) {
+    carrier_.axis_moved = true;
+    carrier_.pending = true;
+  }
   const BlockContext at{line_, file_, feed_before_, motion_before_};
   const bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
   if (geometry_motion || !is_arc) return motion_.build(words_, modal_, at);

@@ -81,7 +81,9 @@ void Interpreter::executeCarrierWords() {
   CarrierState& c = carrier_;
   c.pending = false;
   bool frames_changed = false;
-  if (c.programmed_number >= 0 || (c.mode_changed && c.number > 0)) {
+  const bool follow_axes = c.axis_moved && c.number > 0;
+  c.axis_moved = false;
+  if (c.programmed_number >= 0 || (c.mode_changed && c.number > 0) || follow_axes) {
     if (c.programmed_number >= 0) c.number = c.programmed_number;
     carriers_.setCount(static_cast<int>(data_.get(md_carriers_)));
     c.pose = carriers_.pose(c.number, c.mode, frames_.map().linear,

@@ -18,8 +18,9 @@ struct CarrierState {
   bool pending = false;
   int programmed_number = -1;  // TCARR=m of the block, -1 none
   bool mode_changed = false;
-  int parot = -1;    // 1 PAROT, 0 PAROTOF, -1 neither
-  int toframe = -1;  // ToolFrame of the block, -1 none
+  bool axis_moved = false;  // an additional axis moved: TCOABS takes the holder's axes anew
+  int parot = -1;           // 1 PAROT, 0 PAROTOF, -1 neither
+  int toframe = -1;         // ToolFrame of the block, -1 none
   bool tool_frame_on = false;
 };
 
