@@ -7,6 +7,10 @@ where stderr is not a terminal, or with -q, nothing but the alarm is written."""
 import os, pty, subprocess, sys, tempfile
 
 binary = os.path.abspath(sys.argv[1])
+# Passes of the loop: enough for a run of several seconds (the line shows after one); the
+# sanitizer build (about 15 times slower) passes fewer, so that each run stays well within the
+# timeouts.
+passes = int(sys.argv[2]) if len(sys.argv) > 2 else 3000000
 d = tempfile.mkdtemp(prefix="ncoffset-progress-")
 fails = []
 
@@ -20,7 +24,7 @@ def check(name, cond, detail=""):
 # About 6 M segments (a few seconds), then alarm 14080 (jump target missing) at line 9.
 prog = os.path.join(d, "LONG.MPF")
 with open(prog, "w") as f:
-    f.write("R1=0\nWHILE R1<3000000\nG1 X10 Y0 F1000\nG1 X0 Y0\nR1=R1+1\nENDWHILE\n"
+    f.write(f"R1=0\nWHILE R1<{passes}\nG1 X10 Y0 F1000\nG1 X0 Y0\nR1=R1+1\nENDWHILE\n"
             "G0 X5\nR2=1\nGOTOF NOWHERE\nM30\n")
 
 
@@ -64,7 +68,7 @@ check("-q: no progress line, the alarm stays", b"segments" not in err and b"\x1b
 # A program larger than 4 MiB: the same loop, then 5 MiB of comment lines.
 big = os.path.join(d, "BIG.MPF")
 with open(big, "w") as f:
-    f.write("R1=0\nWHILE R1<3000000\nG1 X10 Y0 F1000\nG1 X0 Y0\nR1=R1+1\nENDWHILE\n")
+    f.write(f"R1=0\nWHILE R1<{passes}\nG1 X10 Y0 F1000\nG1 X0 Y0\nR1=R1+1\nENDWHILE\n")
     f.write(("; " + "x" * 98 + "\n") * 52000)
     f.write("M30\n")
 status, err = run_with_terminal_stderr(program="BIG.MPF")
