@@ -244,7 +244,6 @@ void SvgWriter::segment(const Segment& s) {
   const bool thread = isThreadMotion(s.motion);
   threads_ |= thread;
   path_->draw(s, thread ? "nco-thread" : s.has_feed ? "nco-cut" : "nco-g0");
-  last_end_ = s.end;
 }
 
 void SvgWriter::programmed(const Segment& s) {
