@@ -33,12 +33,12 @@ bool parseSumOffsetName(std::string_view name, SumOffsetName& out) {
 }
 
 void addSumOffsets(EdgeData& e, const SumOffsetMemory& m, int t, int d, int dl,
-                   const SumOffsetLimits& limits) {
+                   const SumOffsetLimits& limits, bool sum, bool setup) {
   // Parameter y of a set adds to the wear parameter DP(y + 9): L1 DP12, L2 DP13, L3 DP14,
   // radius DP15, ... (FM-W1 11/2006 2.8: "wear" is DP12..DP20 plus the sum and setup offsets).
-  for (bool setup : {false, true}) {
-    if (setup && !limits.setup_offsets) continue;
-    if (const SumOffsetMemory::Set* s = m.find(setup, t, d, dl))
+  for (bool is_setup : {false, true}) {
+    if (is_setup ? !setup || !limits.setup_offsets : !sum) continue;
+    if (const SumOffsetMemory::Set* s = m.find(is_setup, t, d, dl))
       for (size_t y = 0; y < s->size(); ++y) e.dp[12 + y] += (*s)[y];
   }
 }

@@ -51,8 +51,9 @@ class SumOffsetMemory {
 };
 
 // Adds DL `dl` of edge (t, d) to the wear parameters of `e` (DP12..DP20 += SCP + ECP): the edge
-// as its selection with DL sees it. The setup offsets count only with `limits.setup_offsets`.
+// as its selection with DL sees it. The setup offsets count only with `limits.setup_offsets`;
+// `sum`/`setup` choose the components (GETTCOR's S and E; a selection takes both).
 void addSumOffsets(EdgeData& e, const SumOffsetMemory& m, int t, int d, int dl,
-                   const SumOffsetLimits& limits);
+                   const SumOffsetLimits& limits, bool sum = true, bool setup = true);
 
 }  // namespace ncoffset::tool

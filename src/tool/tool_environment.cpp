@@ -115,11 +115,7 @@ int ToolSelection::toolCorrection(std::span<Value> len, const std::string& comp,
   if (env.dl > 0) {  // S and E: the DL's sets are wear DP12..DP20 (section 10)
     const int t = dconf_.flat ? 0 : env.t;
     if (!sums_.exists(t, env.d, env.dl)) return -6;
-    for (bool setup : {false, true}) {
-      const SumOffsetMemory::Set* set = sums_.find(setup, t, env.d, env.dl);
-      if (!set || !(setup ? c.setup && sum_limits_.setup_offsets : c.sum)) continue;
-      for (size_t k = 0; k < set->size(); ++k) sel.dp[12 + k] += (*set)[k];
-    }
+    addSumOffsets(sel, sums_, t, env.d, env.dl, sum_limits_, c.sum, c.setup);
   }
   const EffectiveLengths l = ncoffset::effectiveLengths(sel, env.settings);
   Vec3 v = ncoffset::lengthVector(sel, env.settings, env.plane, env.mirrored);
