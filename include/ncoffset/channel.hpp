@@ -18,8 +18,13 @@ namespace ncoffset {
 
 // Explicit resource limits (docs/limits.md). Exceeding one ends the run with an alarm.
 struct Limits {
-  size_t max_line_length = 65536;    // characters in one block
-  long long max_blocks = 100000000;  // executed blocks (endless-loop guard)
+  size_t max_line_length = 65536;  // characters in one block
+  // Executed blocks of one run before alarm 99002 (the endless-loop guard). 0, the default, is
+  // automatic: max_blocks_auto_base and 2 more for each byte of program text the run has loaded
+  // (main program or init file, subprograms, cycles; docs/limits.md "Endless loops"), so that a
+  // long CAM program never meets it and a short loop that never ends stops within a second.
+  long long max_blocks = 0;
+  long long max_blocks_auto_base = 5000000;
   // Blocks executed since the last motion: ends a loop without motion (WHILE TRUE, a jump
   // back, pass counts of a subprogram that only computes) in about a second.
   long long max_blocks_without_motion = 10000000;

@@ -126,7 +126,7 @@ void Interpreter::caseStatement(const Stmt& st, size_t index, bool& jumped) {
     const Stmt& arm = b.stmts[k];
     if (arm.kind != StmtKind::CaseArm) break;
     bool hit = arm.expr < 0;
-    loop_.expression(b, arm.expr);
+    loop_.decides(b, arm.expr);
     if (!hit) {
       Value v = eval_.eval(b, arm.expr);
       hit = (v.isText() || sel.isText()) ? lang::toText(v) == lang::toText(sel)

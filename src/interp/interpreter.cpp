@@ -95,7 +95,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   flow_.begin(program);
   vars_.beginRun();
   resetCalls();
-  without_motion_ = 0;             // an init file's data blocks do not count against the program
+  without_motion_ = 0;  // an init file's data blocks do not count against the program
+  run_start_ = executed_;
+  block_budget_ =
+      executed_ + (options_.limits.max_blocks > 0 ? options_.limits.max_blocks
+                                                  : options_.limits.max_blocks_auto_base);
   if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
   std::string_view text;
@@ -121,10 +125,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
       break;
     }
     if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
-    if (++executed_ > options_.limits.max_blocks)
-      raise(AlarmNumber::BlockLimit,
-            fmt::format("limit of {} executed blocks reached (endless loop?); raise --max-blocks",
-                        options_.limits.max_blocks));
+    if (++executed_ > block_budget_) [[unlikely]]
+      blockBudgetReached();
     if (++without_motion_ > options_.limits.max_blocks_without_motion)
       raise(AlarmNumber::NoMotionLimit,
             fmt::format("{} blocks executed without any motion (endless loop?); raise "
@@ -181,11 +183,11 @@ void Interpreter::executeBlock() {
     switch (st.kind) {
       case StmtKind::Word:
         if (!st.literal) [[unlikely]]
-          loop_.expression(b, st.expr);
+          watchWord(st);
         collectWord(st);
         break;
       case StmtKind::Assign:
-        loop_.dirty();
+        loop_.assignment(b, st);
         assign(st);
         break;
       case StmtKind::Call:

@@ -98,6 +98,8 @@ class Interpreter final : public lang::Environment {
   // jump that went back from the line at offset `from` (alarm 99007 on the second clean pass).
   void watchKeyword(const lang::Stmt& st);
   void watchProcCall(const lang::Stmt& st);
+  void watchWord(const lang::Stmt& st);
+  void blockBudgetReached();
   void backEdge(size_t from);
   void callSubprogram(std::string_view name, long long repeat);
   // Finds a subprogram file beside the main program (nullptr if there is none).
@@ -317,6 +319,8 @@ class Interpreter final : public lang::Environment {
   std::string_view line_text_;  // the executing line (a view into its loaded file)
   int file_ = 0;
   long long executed_ = 0;
+  long long run_start_ = 0;       // executed_ when the run began
+  long long block_budget_ = 0;    // executed_ beyond which blockBudgetReached() decides (99002)
   long long without_motion_ = 0;  // blocks executed since the last motion
   LoopWatch loop_;                // ends a loop that provably never ends (99007)
   size_t for_continue_ = static_cast<size_t>(-1);

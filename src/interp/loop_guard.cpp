@@ -27,8 +27,17 @@ void Interpreter::watchKeyword(const lang::Stmt& st) {
     loop_.dirty();
     return;
   }
-  loop_.expression(block_, st.expr);  // the condition or CASE selector
-  if (st.jump != lang::JumpKind::None) loop_.expression(block_, st.target);
+  loop_.decides(block_, st.expr);  // the condition or CASE selector
+  if (st.jump != lang::JumpKind::None) loop_.decides(block_, st.target);
+}
+
+void Interpreter::watchWord(const lang::Stmt& st) {
+  // A computed M word can end the program (M=R1 with R1 = 30): it decides the way as a
+  // condition does. Other words only move or select.
+  if (st.name == "M")
+    loop_.decides(block_, st.expr);
+  else
+    loop_.expression(block_, st.expr);
 }
 
 void Interpreter::watchProcCall(const lang::Stmt& st) {
@@ -47,10 +56,34 @@ void Interpreter::backEdge(size_t from) {
   if (lvl.pos.offset > from) return;  // a jump forward
   if (loop_.backEdge(lvl.program, flow_.depth(), from, lvl.pos.offset))
     raise(AlarmNumber::EndlessLoop,
-          fmt::format("endless loop: lines {} to {} ran twice with every variable unchanged "
-                      "(nothing assigned, called, shifted or read from the control), so they "
-                      "repeat for ever and the program never ends",
+          fmt::format("endless loop: lines {} to {} ran twice and changed no variable that a "
+                      "condition or jump reads (nothing called, shifted or read from the "
+                      "control), so they repeat for ever and the program never ends",
                       lvl.pos.line, line_));
+}
+
+}  // namespace ncoffset::interp
+
+namespace ncoffset::interp {
+
+// --max-blocks (docs/limits.md "Endless loops"). The automatic limit grows with the program text
+// loaded, which a subprogram call or a fed stream may have enlarged since the budget was set: it
+// is computed again here, and only a run beyond it is an alarm.
+void Interpreter::blockBudgetReached() {
+  const Limits& l = options_.limits;
+  if (l.max_blocks > 0)
+    raise(AlarmNumber::BlockLimit,
+          fmt::format("limit of {} executed blocks reached (endless loop?); raise --max-blocks",
+                      l.max_blocks));
+  const long long budget = l.max_blocks_auto_base + 2 * static_cast<long long>(flow_.loadedBytes());
+  if (executed_ - run_start_ <= budget) {
+    block_budget_ = run_start_ + budget;
+    return;
+  }
+  raise(AlarmNumber::BlockLimit,
+        fmt::format("limit of {} executed blocks reached ({} and 2 per byte of the {} bytes of "
+                    "program text loaded; endless loop?); raise --max-blocks",
+                    budget, l.max_blocks_auto_base, flow_.loadedBytes()));
 }
 
 }  // namespace ncoffset::interp

@@ -318,3 +318,18 @@ bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch 
 }
 
 }  // namespace ncoffset::interp
+
+namespace ncoffset::interp {
+
+size_t ProgramFlow::loadedBytes() const {
+  size_t bytes = 0;
+  const lang::SourceFile* last = nullptr;  // an archive's programs follow each other
+  for (const auto& f : files_)
+    if (f->source.get() != last) {
+      last = f->source.get();
+      bytes += last->text().size();
+    }
+  return bytes;
+}
+
+}  // namespace ncoffset::interp

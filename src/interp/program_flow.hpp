@@ -91,6 +91,9 @@ class ProgramFlow {
   // an init file, which runs as a whole).
   LoadedProgram& load(std::shared_ptr<lang::SourceFile> source, bool programs = true);
   size_t fileCount() const { return files_.size(); }
+  // The characters of program text loaded in this run (each file or archive once): the
+  // automatic --max-blocks grows with it.
+  size_t loadedBytes() const;
   // The file whose control structures were being checked when an alarm came (-1: none);
   // asking forgets it.
   int takeFailedFile() { return std::exchange(failed_file_, -1); }

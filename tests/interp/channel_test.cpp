@@ -152,9 +152,28 @@ TEST(Channel, StructureAlarmFromThePreScan) {
 TEST(Channel, BlockLimit) {
   RunOptions o;
   o.limits.max_blocks = 50;
-  Outcome r = run("LBL: G1 X1 F100\nR1=R1+1\nG1 X2\nGOTOB LBL\n", o);
+  Outcome r = run("LBL: G1 X1 F100\nR1=R1+1\nG1 X2\nIF R1>0 GOTOB LBL\n", o);
   ASSERT_TRUE(r.result.alarm);
   EXPECT_EQ(r.result.alarm->number, 99002);
+}
+
+// The automatic --max-blocks (docs/limits.md "Endless loops"): the base and 2 blocks per byte of
+// program text. The loop runs 1 + 600 * 3 + 1 = 1802 blocks.
+TEST(Channel, AutomaticBlockLimitGrowsWithTheProgramText) {
+  const std::string loop = "R1=0\nLL: R1=R1+1\nG1 X=R1 F100\nIF R1<600 GOTOB LL\nM30\n";
+  RunOptions o;
+  o.limits.max_blocks_auto_base = 1000;
+  Outcome small = run(loop, o);  // 1000 + 2 * 50 bytes < 1802
+  ASSERT_TRUE(small.result.alarm);
+  EXPECT_EQ(small.result.alarm->number, 99002);
+  const long long budget = 1000 + 2 * static_cast<long long>(loop.size());
+  EXPECT_NE(small.result.alarm->text.find("limit of " + std::to_string(budget) + " executed"),
+            std::string::npos)
+      << small.result.alarm->text;
+  const std::string padded = "; " + std::string(500, '-') + "\n" + loop;  // 1000 + 2 * 553
+  Outcome large = run(padded, o);
+  EXPECT_FALSE(large.result.alarm) << large.result.alarm->text;
+  EXPECT_EQ(large.sink.segments.size(), 600u);
 }
 
 TEST(Channel, ControlFlowAndVariables) {

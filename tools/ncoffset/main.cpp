@@ -235,8 +235,9 @@ int main(int argc, char** argv) {
                "radius values)");
   app.add_flag("-q,--quiet", a.quiet, "no progress line on stderr (shown on a terminal otherwise)");
   auto& l = options.limits;
-  app.add_option("--max-blocks", l.max_blocks, "executed blocks before alarm 99002")
-      ->capture_default_str()
+  app.add_option("--max-blocks", l.max_blocks,
+                 "executed blocks before alarm 99002 (default: 5,000,000 and 2 per byte of the "
+                 "programs loaded)")
       ->transform(ncoffset::cli::limitValue(ncoffset::cli::kMaxBlocksMax));
   app.add_option("--max-blocks-without-motion", l.max_blocks_without_motion,
                  "executed blocks since the last motion before alarm 99006")
