@@ -212,6 +212,8 @@ def main():
         ap.error("--variants: integral, decimals or both")
     base = args.keep or tempfile.mkdtemp(prefix="ncoffset-compare-")
     print(f"ncoffset: {args.ncoffset}\nrs274:    {args.rs274 or '(not given: ncoffset only)'}")
+    # Wall times on a loaded machine mostly measure the queue: say how loaded it was.
+    print("load average: %.2f %.2f %.2f (%d CPUs)" % (*os.getloadavg(), os.cpu_count() or 0))
     ok = True
     try:
         for v in variants:
