@@ -7,7 +7,7 @@
 For each variant (integral coordinates, decimals in every coordinate) it writes the program in
 both dialects (bench/trc_contour.py: TRC.MPF with TOOLS.INI, trc.ngc with tool.tbl), then runs
 
-  ncoffset -o out.csv TRC.MPF --init TOOLS.INI
+  ncoffset -q -o out.csv TRC.MPF --init TOOLS.INI
   HOME=TMP rs274 -g -t tool.tbl -v params.var trc.ngc out.txt
 
 alternately (A, B, A, B, ...) RUNS times each, both writing their path to a file, and prints
@@ -20,10 +20,10 @@ the number the generator wrote; a difference fails the run (exit 1).
 
 Without --rs274 only ncoffset runs (the smoke mode of ctest `bench_compare_rs274`);
 `--rs274 setup` installs it with tests/differential/setup_rs274.sh (exit 77 where it cannot be
-had: ctest `bench_compare_rs274_peer` is then skipped). rs274 is found in its unpacked package (`dpkg -x linuxcnc-uspace_*.deb DIR`: DIR/usr/bin/rs274, its
-libraries in DIR/usr/lib) or in the cache of tests/differential/setup_rs274.sh (bin/ and lib/):
-LD_LIBRARY_PATH is the `lib` directory beside the binary's directory unless --rs274-lib is
-given. Nothing of LinuxCNC is part of ncoffset.
+had: ctest `bench_compare_rs274_peer` is then skipped). rs274 is found in its unpacked package
+(`dpkg -x linuxcnc-uspace_*.deb DIR`: DIR/usr/bin/rs274, its libraries in DIR/usr/lib) or in
+the cache of setup_rs274.sh (bin/ and lib/): LD_LIBRARY_PATH is the `lib` directory beside the
+binary's directory unless --rs274-lib is given. Nothing of LinuxCNC is part of ncoffset.
 """
 import argparse
 import os
@@ -118,7 +118,7 @@ def fmt_int(n):
 def report_variant(label, progs, tools, args):
     """Prints the variant's table; returns False when a move count differs."""
     blocks = progs["blocks"]
-    print(f"\n{label}: {fmt_int(blocks)} blocks ({progs['laps']} laps of "
+    print(f"\n{label}: {fmt_int(blocks)} blocks ({fmt_int(progs['laps'])} laps of "
           f"{trc_contour.BLOCKS_PER_LAP}, G41/G42 alternating, arcs {args.arcs.upper()}), "
           f"{fmt_int(progs['moves'])} moves written")
     ok = True

@@ -116,8 +116,8 @@ def write(directory, blocks=100000, decimals=False, arcs="cr"):
             if ngc:
                 f.write("G21 G90 G17 G40 G49 G94\nT1 M6 G43\n")
             else:
-                f.write(f"; issue 22 benchmark: {laps} laps, G41/G42 alternating (bench/trc_contour.py)\n"
-                        "G17 G90 G94 G71\nT1 D1\n")
+                f.write(f"; issue 22 benchmark: {laps} laps, G41/G42 alternating "
+                        "(bench/trc_contour.py)\nG17 G90 G94 G71\nT1 D1\n")
             for lap in range(laps):
                 f.write("\n".join(lap_blocks(s, lap, ngc, arcs)))
                 f.write("\n")
