@@ -45,39 +45,9 @@ M17
   return text;
 }
 
-// CYCLE83's strokes up to the dwell after each (the rest follows in cycle83()).
-constexpr std::string_view kCycle83Strokes = R"(G0 AX[_A3]=_RFP+_SDIS
-WHILE _CUR<_TOT-0.000001
-IF (_N>0) AND (_DAM<>0)
-_STEP=MAXVAL(_STEP-ABS(_DAM),_MIN)
-ENDIF
-_NEXT=MINVAL(_CUR+_STEP,_TOT)
-IF (_VARI==1) AND (_N>0)
-G0 AX[_A3]=_RFP-_CUR+_ANT
-ENDIF
-IF _N==0
-G1 AX[_A3]=_RFP-_NEXT F=_F*_FR
-ELSE
-G1 AX[_A3]=_RFP-_NEXT F=_F
-ENDIF
-)";
-
-// CYCLE83(RTP, RFP, SDIS, DP, DPR, FDEP, FDPR, DAM, DTB, DTS, FRF, VARI, _AXN, _MDEP, _VRT,
-// _DTD, _DIS1): deep-hole drilling in strokes. The first stroke to FDEP (or FDPR below RFP) at
-// F * FRF; each further stroke the one before less DAM, not less than DAM (_MDEP where given);
-// the last one ends at the final depth. VARI 0 (chip breaking): after each stroke the dwell DTB
-// and a G1 retraction of 1 mm (_VRT where given) at the caller's feed. VARI 1 (chip removal):
-// the dwell DTB, G0 to RFP + SDIS, the dwell DTS, G0 back to the depth reached less the
-// anticipation distance (0.6 mm up to 30 mm of depth, depth / 50 beyond, at most 7 mm; _DIS1
-// where given). At the end G0 to RTP; F is the caller's again.
-const std::string& cycle83() {
-  static const std::string text = joined(
-      {R"(PROC CYCLE83(REAL _RTP, REAL _RFP, REAL _SDIS, REAL _DP, REAL _DPR, REAL _FDEP, REAL _FDPR, REAL _DAM, REAL _DTB, REAL _DTS, REAL _FRF, INT _VARI, INT _AXN, REAL _MDEP, REAL _VRT, REAL _DTD, REAL _DIS1, INT _GMODE, INT _DMODE, INT _AMODE) SAVE
-DEF STRING[1] _A1, _A2, _A3
-DEF REAL _Z, _TOT, _STEP, _CUR, _NEXT, _ANT, _F, _FR, _MIN, _VR
-DEF INT _N
-)",
-       kNewModes, kPlaneAxes, kToolAxis, kFinalDepth, R"(_TOT=_RFP-_Z
+// CYCLE83's first stroke and degression (PG Cycles 11.02, 2.1.4, parameters FDEP, FDPR, DAM;
+// the newer versions' DAM < 0, a degression factor, with _MDEP the smallest stroke).
+constexpr std::string_view kCycle83Setup = R"(_TOT=_RFP-_Z
 _STEP=_TOT
 IF $P_SUBPAR[6]
 _STEP=_RFP-_FDEP
@@ -88,16 +58,21 @@ ENDIF
 IF _STEP<=0
 _STEP=_TOT
 ENDIF
+_FAC=0
+_MIN=_DAM
+IF _DAM<0
+_FAC=-_DAM
+_MIN=_MDEP
+IF _MDEP<=0
+_NCO_NOT_MODELLED("a degression factor (CYCLE83 DAM < 0) without a minimum drilling depth _MDEP")
+ENDIF
+ENDIF
 _ANT=0.6
 IF _TOT>30
 _ANT=MINVAL(_TOT/50,7)
 ENDIF
 IF _DIS1>0
 _ANT=_DIS1
-ENDIF
-_MIN=ABS(_DAM)
-IF _MDEP>0
-_MIN=_MDEP
 ENDIF
 _VR=1
 IF _VRT>0
@@ -110,13 +85,62 @@ ENDIF
 _F=$P_F
 _CUR=0
 _N=0
-)",
-       kCycle83Strokes, kDwellDtb, R"(_CUR=_NEXT
+_SPLIT=0
+)";
+
+// CYCLE83's strokes up to the dwell after each (the rest follows in kCycle83Return). From the
+// second stroke on (DAM not 0): the stroke before less DAM, at least DAM (a factor: times
+// -DAM, at least _MDEP); where the rest of the hole is more than that stroke but not more than
+// twice it, the rest is drilled in two equal strokes (PG Cycles 2.1.4, DAM: "the last two
+// strokes are divided equally"; docs/cycles.md). The last stroke ends exactly at the depth.
+constexpr std::string_view kCycle83Strokes = R"(G0 AX[_A3]=_RFP+_SDIS
+WHILE _CUR<_TOT-0.000001
+IF (_N>0) AND (_DAM<>0) AND (_SPLIT==0)
+IF _FAC>0
+_STEP=MAXVAL(_STEP*_FAC,_MIN)
+ELSE
+_STEP=MAXVAL(_STEP-_DAM,_DAM)
+ENDIF
+IF (_TOT-_CUR>_STEP+0.000001) AND (_TOT-_CUR<=2*_STEP+0.000001)
+_STEP=(_TOT-_CUR)/2
+_SPLIT=1
+ENDIF
+ENDIF
+_NEXT=MINVAL(_CUR+_STEP,_TOT)
+IF _NEXT>_TOT-0.000001
+_NEXT=_TOT
+ENDIF
+IF (_VARI==1) AND (_N>0)
+G0 AX[_A3]=_RFP-_CUR+_ANT
+ENDIF
+IF _N==0
+G1 AX[_A3]=_RFP-_NEXT F=_F*_FR
+ELSE
+G1 AX[_A3]=_RFP-_NEXT F=_F
+ENDIF
+_DW=_DTB
+IF (_NEXT>=_TOT) AND (_DTD<>0)
+_DW=_DTD
+ENDIF
+IF _DW>0
+G4 F=_DW
+ENDIF
+IF _DW<0
+G4 S=-_DW
+ENDIF
+)";
+
+// After each stroke but the last: chip removal G0 out to RFP + SDIS and the dwell DTS; chip
+// breaking the G1 retraction. At the end G0 to RTP and the caller's F again.
+constexpr std::string_view kCycle83Return = R"(_CUR=_NEXT
 IF _CUR<_TOT-0.000001
 IF _VARI==1
 G0 AX[_A3]=_RFP+_SDIS
 IF _DTS>0
 G4 F=_DTS
+ENDIF
+IF _DTS<0
+G4 S=-_DTS
 ENDIF
 ELSE
 G1 AX[_A3]=_RFP-_CUR+_VR F=_F
@@ -127,7 +151,25 @@ ENDWHILE
 G0 AX[_A3]=_RTP
 F=_F
 M17
-)"});
+)";
+
+// CYCLE83(RTP, RFP, SDIS, DP, DPR, FDEP, FDPR, DAM, DTB, DTS, FRF, VARI, _AXN, _MDEP, _VRT,
+// _DTD, _DIS1): deep-hole drilling in strokes. The first stroke to FDEP (or FDPR below RFP) at
+// F * FRF, the further ones as kCycle83Strokes says. After each stroke the dwell DTB (after the
+// last one _DTD where not 0; > 0 seconds, < 0 revolutions). VARI 0 (chip breaking): a G1
+// retraction of 1 mm (_VRT where given) at the caller's feed. VARI 1 (chip removal): G0 to
+// RFP + SDIS, the dwell DTS, G0 back to the depth reached less the anticipation distance
+// (0.6 mm up to 30 mm of depth, depth / 50 beyond, at most 7 mm; _DIS1 where given). At the end
+// G0 to RTP; F is the caller's again.
+const std::string& cycle83() {
+  static const std::string text = joined(
+      {R"(PROC CYCLE83(REAL _RTP, REAL _RFP, REAL _SDIS, REAL _DP, REAL _DPR, REAL _FDEP, REAL _FDPR, REAL _DAM, REAL _DTB, REAL _DTS, REAL _FRF, INT _VARI, INT _AXN, REAL _MDEP, REAL _VRT, REAL _DTD, REAL _DIS1, INT _GMODE, INT _DMODE, INT _AMODE) SAVE
+DEF STRING[1] _A1, _A2, _A3
+DEF REAL _Z, _TOT, _STEP, _CUR, _NEXT, _ANT, _F, _FR, _MIN, _VR, _FAC, _DW
+DEF INT _N, _SPLIT
+)",
+       kNewModes, kPlaneAxes, kToolAxis, kFinalDepth, kCycle83Setup, kCycle83Strokes,
+       kCycle83Return});
   return text;
 }
 
