@@ -155,5 +155,23 @@ TEST(Settcor, StatusOfTheEdgeAndTheAlarms) {
   EXPECT_EQ(alarmOf([&] { s.setToolCorrection(req("GW", 3, 0, {1, 0, 0}), env); }), 99010);
 }
 
+// Flat D numbers (MD18102 = 1): the edge is $TC_DPx[d], the T does not matter.
+TEST(Settcor, FlatDNumbersWriteTheOneTable) {
+  ToolSelection s(100);
+  DNumberConfig flat;
+  flat.flat = true;
+  s.configure(flat);
+  std::vector<Value> idx{Value::integer(3)};
+  ASSERT_TRUE(s.write("$TC_DP1", idx, true, Value::real(120)));
+  ToolEnvironment env;
+  env.t = 7, env.d = 3;
+  ASSERT_EQ(s.setToolCorrection(req("G", 3, 1, {12.5, 0, 0}), env), 0);
+  Value out;
+  ASSERT_TRUE(s.read("$TC_DP3", idx, true, Plane::G17, out));
+  EXPECT_EQ(out.num, 12.5);
+  env.d = 4;
+  EXPECT_EQ(s.setToolCorrection(req("G", 3, 1, {12.5, 0, 0}), env), -5);
+}
+
 }  // namespace
 }  // namespace ncoffset::tool
