@@ -235,13 +235,17 @@ class Interpreter final : public lang::Environment {
                                        int rows, int cols, const char* what);
 
   // --- D numbers, tool environments (tool_functions.cpp) ---
-  // CHKDNO, GETDNO, SETDNO, DZERO, GETACTTD, GETACTT, TOOLENV, DELTOOLENV, GETTENV, GETTCOR.
+  // CHKDNO, GETDNO, SETDNO, DZERO, GETACTTD, GETACTT, TOOLENV, DELTOOLENV, GETTENV, GETTCOR,
+  // SETTCOR.
   bool toolFunction(std::string_view name, std::span<const lang::Value> args, lang::Value& out);
   void configureDNumbers();  // MD18102, MD18105, MD18106 into the tool selection
   // Writes `v` to the k-th argument of the call of `fn` in this block (a VAR parameter).
   void storeCallArgument(std::string_view fn, size_t k, const lang::Value& v, bool required);
   lang::Value toolEnvironmentCall(std::string_view name, std::span<const lang::Value> args);
   lang::Value callGettcor(std::span<const lang::Value> args);
+  lang::Value callSettcor(std::span<const lang::Value> args);
+  // The environment `stat` names (empty: the current state): status 0, -1 (MD18116 = 0), -2.
+  int toolEnvironmentFor(const std::string& stat, tool::ToolEnvironment& env);
 
   // --- system variables and frame functions (system_variables.cpp) ---
   bool readSystem(std::string_view name, std::span<const lang::Value> idx, bool indexed,

@@ -270,9 +270,6 @@ Value Interpreter::call(std::string_view name, std::span<const Value> args) {
     return Value::empty();
   }
   if (Value out; toolFunction(name, args, out)) return out;  // tool_functions.cpp
-  if (name == "SETTCOR")
-    raise(AlarmNumber::NotModelled,
-          "SETTCOR (changing tool components, W1 2.10.6) is not modelled by ncoffset");
   if (Value out; predefinedCall(name, args, out)) return out;
   // A subprogram returns no value (PROC has no result; FCTDEF polynomials serve synchronized
   // actions only, PM-JP "Polynomial definition"): as a function in an expression its name is

@@ -8,6 +8,7 @@
 
 #include "interp/interpreter.hpp"
 #include "ncoffset/alarm.hpp"
+#include "tool/settcor.hpp"
 
 namespace ncoffset::interp {
 
@@ -106,6 +107,8 @@ bool Interpreter::toolFunction(std::string_view name, std::span<const Value> arg
     out = toolEnvironmentCall(name, args);
   } else if (name == "GETTCOR") {
     out = callGettcor(args);
+  } else if (name == "SETTCOR") {
+    out = callSettcor(args);
   } else {
     return false;
   }
@@ -162,24 +165,54 @@ Value Interpreter::toolEnvironmentCall(std::string_view name, std::span<const Va
   return Value::integer(0);
 }
 
+int Interpreter::toolEnvironmentFor(const std::string& stat, tool::ToolEnvironment& env) {
+  env = tools_.currentEnvironment(selectionContext().settings, modal_.plane,
+                                  frames_.active().mirror, frames_.map().linear);
+  if (stat.empty()) return 0;  // the empty name: the current state
+  if (data_.get("$MN_MM_NUM_TOOL_ENV") <= 0) return -1;
+  for (const auto& e : tools_.environments())
+    if (e.name == stat) {
+      env = e;
+      return 0;
+    }
+  return -2;
+}
+
 Value Interpreter::callGettcor(std::span<const Value> args) {
   static constexpr std::string_view kName = "GETTCOR";
   wantArgs(args, 1, 6, kName);
   std::span<Value> len = arrayArgument(kName, args[0], false, 11, 0, "_LEN");
-  const std::string comp = textArg(args, 1, kName), stat = textArg(args, 2, kName);
-  tool::ToolEnvironment env = tools_.currentEnvironment(
-      selectionContext().settings, modal_.plane, frames_.active().mirror, frames_.map().linear);
-  if (!stat.empty()) {
-    if (data_.get("$MN_MM_NUM_TOOL_ENV") <= 0) return Value::integer(-1);
-    bool found = false;
-    for (const auto& e : tools_.environments())
-      if (e.name == stat) env = e, found = true;
-    if (!found) return Value::integer(-2);
-  }
+  const std::string comp = textArg(args, 1, kName);
+  tool::ToolEnvironment env;
+  if (int st = toolEnvironmentFor(textArg(args, 2, kName), env)) return Value::integer(st);
   env.t = wholeArg(args, 3, kName, env.t);
   env.d = wholeArg(args, 4, kName, env.d);
   env.dl = wholeArg(args, 5, kName, env.dl);
   return Value::integer(tools_.toolCorrection(len, comp, env));
+}
+
+// SETTCOR(_CORVAL, _COMP, _CORCOMP, _CORMODE, _GEOAX, _STAT, _T, _D, _DL) (W1 "Changing tool
+// components"; docs/tool-offsets.md section 14a): the status as the function value.
+Value Interpreter::callSettcor(std::span<const Value> args) {
+  static constexpr std::string_view kName = "SETTCOR";
+  wantArgs(args, 2, 9, kName);
+  tool::SettcorRequest r;
+  std::span<Value> val = arrayArgument(kName, args[0], false, 3, 0, "_CORVAL");
+  for (size_t k = 0; k < 3; ++k) r.value[k] = lang::toNumber(val[k], "_CORVAL");
+  r.comp = textArg(args, 1, kName);
+  r.corcomp = wholeArg(args, 2, kName, 0);
+  r.cormode = wholeArg(args, 3, kName, 0);
+  if (!omitted(args, 4)) {
+    const Value& ax = args[4];
+    if (ax.type == Type::Axis || ax.type == Type::String || ax.type == Type::Symbol)
+      r.geoax = axes_.geometry(ax.str);  // -1: no geometry axis (status -13)
+  }
+  tool::ToolEnvironment env;
+  if (int st = toolEnvironmentFor(textArg(args, 5, kName), env)) return Value::integer(st);
+  env.t = wholeArg(args, 6, kName, env.t);
+  env.d = wholeArg(args, 7, kName, env.d);
+  env.dl = wholeArg(args, 8, kName, env.dl);
+  return Value::integer(tools_.setToolCorrection(r, env));
 }
 
 }  // namespace ncoffset::interp

@@ -363,8 +363,6 @@ constexpr PredefinedName kNames[] = {
      "sets channel wait marks (one channel here)"},
     {"SETPIECE", NameClass::NoPathEffect, false, false, false,
      "piece count of the tool management"},
-    {"SETTCOR", NameClass::NotModelled, false, false, false,
-     "changes tool components (W1 2.10.6): not modelled"},
     {"SF", NameClass::NoPathEffect, false, false, false,
      "start angle of a thread (the spindle angle where the cut starts; multi-start threads: one "
      "pass per start, docs/threads.md): not the path"},

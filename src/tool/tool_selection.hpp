@@ -48,6 +48,8 @@ struct DNumberConfig {
   bool freeNumbers() const { return max_d > max_per_tool; }
 };
 
+struct SettcorRequest;  // settcor.hpp
+
 // A saved tool environment (TOOLENV, W1 "Working with tool environments"): what GETTCOR needs
 // to evaluate the tool data later as at the TOOLENV call.
 struct ToolEnvironment {
@@ -87,6 +89,9 @@ class ToolSelection {
   // GETTCOR: fills len[0..10]; returns the status (0, -2 .. -9).
   int toolCorrection(std::span<lang::Value> len, const std::string& comp,
                      const ToolEnvironment& env) const;
+  // SETTCOR (tool_environment_write.cpp): writes one component of env's T, D (DL); returns the
+  // status (0, -3 .. -14), alarm 99010 for the parts not modelled.
+  int setToolCorrection(const SettcorRequest& r, const ToolEnvironment& env);
 
   // Executes T, M6 and D of a block (MD22550 = 0: T changes the tool; 1: T preselects, M6
   // changes). Alarms 17191 (tool not existing), 17181 (edge not existing).
