@@ -84,6 +84,10 @@ struct TrcSettings {
   // (the plane of the active frame). docs/radius-compensation.md "CUT2D, CUT2DF". (Here: in the
   // padding after `strategy`, the block copied per block does not grow.)
   bool frame_plane = false;
+  // G group 40: true CUTCONON, false CUTCONOF: "keep tool radius compensation constant" (W1
+  // "Keep tool radius compensation constant"; docs/radius-compensation.md "CUTCONON"). (In the
+  // same padding.)
+  bool constant = false;
   double corner_limit = 100;       // MD20210 CUTCOM_CORNER_LIMIT (degrees)
   double curve_insert_limit = 10;  // MD20230 CUTCOM_CURVE_INSERT_LIMIT (degrees)
   int max_dummy_blocks = 1;        // MD20250 CUTCOM_MAXNUM_DUMMY_BLOCKS

@@ -301,6 +301,10 @@ void Interpreter::namedWord(const Stmt& st) {
     tools_.setDifferential(modal_.cut2d_differential);
     return;
   }
+  if (w == "CUTCONON" || w == "CUTCONOF") {  // group 40: keep radius compensation constant
+    modal_.cut_constant = w == "CUTCONON";
+    return;
+  }
   if (w == "SUPA") {
     words_.suppress_frames = 1;
     return;

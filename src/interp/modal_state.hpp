@@ -30,6 +30,7 @@ struct ModalState {
   Plane plane = Plane::G17;         // group 6
   bool incremental = false;         // group 14: G90 / G91
   bool cut2d_frame = false;         // group 22: CUT2DF, CUT2DFD (docs/radius-compensation.md)
+  bool cut_constant = false;        // group 40: CUTCONON (next to cut2d_frame: copied together)
   bool cut2d_differential = false;  // group 22: CUT2DD, CUT2DFD (R = the differences only)
   Units units = Units::G71;         // group 13
   core::TrcMode trc = core::TrcMode::Off;  // group 7: G40, G41, G42

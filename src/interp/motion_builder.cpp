@@ -251,6 +251,7 @@ NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& 
   t.mode = modal.trc;
   t.radius = modal.offn + tools_.radius();
   t.frame_plane = modal.cut2d_frame;
+  t.constant = modal.cut_constant;
   t.approach = modal.approach;
   t.corner = modal.corner;
   t.collision = modal.collision;

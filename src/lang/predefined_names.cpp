@@ -92,10 +92,11 @@ constexpr PredefinedName kNames[] = {
     {"CUT3DFS", NameClass::NotModelled, false, false, false,
      "3D face milling compensation: not modelled yet"},
     {"CUTCONOF", NameClass::Modelled, false, false, false,
-     "contour tool off: the default of its group, what ncoffset computes"},
-    {"CUTCONON", NameClass::NotModelled, false, false, false,
-     "compensation of contour tools (W1 \"Contour tools\": several cutting edges "
-     "D1..Dn of one tool describe its contour) is not modelled"},
+     "keep tool radius compensation constant off: the default of G group 40; the block that "
+     "ends CUTCONON is compensated normally again"},
+    {"CUTCONON", NameClass::Modelled, false, false, false,
+     "keep tool radius compensation constant (W1): the blocks are traversed uncompensated, "
+     "shifted by the offset vector at the end of the last compensated block"},
     {"CYCLE60", NameClass::NotModelled, false, false, true,
      "a Siemens standard cycle: its program computes the path, ncoffset does not model it; a "
      "CYCLE60.SPF on the search path runs instead"},

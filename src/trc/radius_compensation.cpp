@@ -16,14 +16,23 @@ using core::MotionBlock;
 using core::TrcMode;
 using geom::Element;
 
-NCOFFSET_INLINE_STEP void RadiusCompensation::checkSameSettings(const MotionBlock& m) const {
+NCOFFSET_INLINE_STEP bool RadiusCompensation::checkSameSettings(const MotionBlock& m) {
   if (m.plane != selection_.plane)
     raise(AlarmNumber::TrcPlaneChange,
           "change of compensation plane not possible while tool radius compensation is active");
   if (!m.frame.sameAs(selection_.frame))
     detail::notModelled("a frame change while compensation is active");
-  if (m.trc.frame_plane != selection_.trc.frame_plane || projected_) [[unlikely]]
-    checkProjectable(m);
+  // G groups 22 and 40 in one comparison (the selection block never has CUTCONON).
+  if (groupBytes(m.trc) != groupBytes(selection_.trc) || rare_) [[unlikely]]
+    return rareSettings(m);
+  return false;
+}
+
+[[gnu::noinline]] bool RadiusCompensation::rareSettings(const MotionBlock& m) {
+  checkProjectable(m);
+  if (!m.trc.constant && !constant_) return false;
+  if (state_ != State::On) constantAtSelection(m);
+  return keepConstant(m);
 }
 
 // CUT2D with a frame that tilts the working plane: the contour is compensated in its projection
@@ -103,14 +112,17 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
 }
 
 void RadiusCompensation::startSelection(const MotionBlock& m) {
+  if (m.trc.constant) constantAtSelection(m);
   if (m.motion != Motion::G0 && m.motion != Motion::G1)
     raise(AlarmNumber::TrcSelectionNotLinear,
           "activation of tool radius compensation only possible in linear block");
   if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
+  constant_ = false;  // (a G40 while CUTCONON was active left it set)
   settings_ = m.trc;
   selection_ = m;
   metric_ = planeMetric(m, projected_);
+  rare_ = projected_;
   state_ = State::Selecting;
   dummy_blocks_ = 0;
 }
@@ -125,7 +137,7 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
     state_ = State::Off;
     return;
   }
-  checkSameSettings(m);
+  checkSameSettings(m);  // (CUTCONON here: alarm 99010, constantAtSelection)
   if (!planeMotion(m)) {
     waiting_.push_back(m);
     blockWithoutMotion();
@@ -155,7 +167,7 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
     retract(m);
     return;
   }
-  checkSameSettings(m);
+  if (checkSameSettings(m)) return;  // handled by CUTCONON (constant_compensation.cpp)
   if (!planeMotion(m)) {
     if (window_.back().emitted)  // after STOPRE: runs where the last element ended
       emit(atPoint(m, window_.back().compensated.p1));

@@ -16,6 +16,9 @@
 // bottleneck.cpp and approach_retraction.cpp; compensation_internal.hpp holds what they share.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,7 +86,21 @@ class RadiusCompensation final : public core::Stage {
   void checkProjectable(const core::MotionBlock& m) const;
   void motionSelecting(const core::MotionBlock& m);
   void motionOn(const core::MotionBlock& m);
-  void checkSameSettings(const core::MotionBlock& m) const;
+  // The block keeps the selection's plane, frame and G group 22; true when CUTCONON handled it.
+  bool checkSameSettings(const core::MotionBlock& m);
+  // A change of G group 22 or 40, a projected plane, or a suppression running.
+  bool rareSettings(const core::MotionBlock& m);
+  // The bytes of G groups 22 and 40 (TrcSettings::frame_plane, ::constant) as one value: one
+  // comparison per block finds a change of either.
+  static std::uint16_t groupBytes(const core::TrcSettings& t) {
+    static_assert(offsetof(core::TrcSettings, constant) ==
+                  offsetof(core::TrcSettings, frame_plane) + 1);
+    std::uint16_t v;
+    std::memcpy(
+        &v, reinterpret_cast<const unsigned char*>(&t) + offsetof(core::TrcSettings, frame_plane),
+        sizeof v);
+    return v;
+  }
   // Writes the elements no later block can change.
   void release();
   void flushAll();
@@ -154,6 +171,16 @@ class RadiusCompensation final : public core::Stage {
   // Raises 10751 for a junction that no later block can close any more.
   void checkOpen(long next_index) const;
 
+  // --- Keep tool radius compensation constant (constant_compensation.cpp, W1 "Keep tool
+  // radius compensation constant", docs/radius-compensation.md "CUTCONON").
+  // A block with CUTCONON or the first after it; true when it was handled here.
+  bool keepConstant(const core::MotionBlock& m);
+  // The first block of a suppression: the window ends on the normal at its end (the offset).
+  void beginConstant();
+  // A block traversed uncompensated, shifted by `constant_offset_`.
+  void emitShifted(const core::MotionBlock& m);
+  [[noreturn]] static void constantAtSelection(const core::MotionBlock& m);
+
   // --- Approach and retraction (approach_retraction.cpp, W1 2.4.10, details Q1/Q2/Q7).
   // The selection block's approach line to the first element (NORM or KONT); may move the
   // start of `first`.
@@ -177,14 +204,17 @@ class RadiusCompensation final : public core::Stage {
   core::MotionBlock selection_;             // the G41/G42 block waiting for the first element
   std::vector<core::MotionBlock> waiting_;  // blocks without plane motion after the selection
   PieceWindow<Piece> window_;
-  long count_ = 0;             // traversing blocks since the selection
-  bool restart_next_ = false;  // after STOPRE: the next element starts anew
+  long count_ = 0;              // traversing blocks since the selection
+  bool restart_next_ = false;   // after STOPRE: the next element starts anew
+  bool constant_ = false;       // CUTCONON: blocks are shifted by constant_offset_
+  geom::Vec2 constant_offset_;  // the offset vector at the end of the last compensated block
   int dummy_blocks_ = 0;
   core::TrcSettings settings_;  // of the last block
   // The plane's lengths under the selection block's frame (SCALE): the window's elements are in
   // these coordinates, so that R is kept in the machine (toElement / geometry convert).
   geom::PlaneMetric metric_;
   bool projected_ = false;  // CUT2D in a plane the frame tilts: compensated in its projection
+  bool rare_ = false;       // projected_ or constant_: checkSameSettings takes rareSettings
 };
 
 }  // namespace ncoffset::trc
