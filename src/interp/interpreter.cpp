@@ -170,6 +170,17 @@ void Interpreter::executeBlock() {
   if (b.stmts.empty() && b.decls.empty()) return;  // empty, comment or label-only line
   words_.clear();
   ProgramLevel& lvl = flow_.level();
+  if (b.plain) [[likely]] {
+    // Only address words with a plain number (G1 X10 CR=5): no definition, jump or
+    // expression among them, so each goes straight to collectWord.
+    lvl.defs_allowed = false;
+    for (const Stmt& st : b.stmts) {
+      column_ = st.column;
+      collectWord(st);
+    }
+    finishBlock();
+    return;
+  }
   bool jumped = false;
   for (size_t i = 0; i < b.stmts.size() && !jumped; ++i) {
     const Stmt& st = b.stmts[i];
