@@ -56,8 +56,11 @@ bool Interpreter::blockFrames() {
 void Interpreter::finishBlock() {
   // An alarm of the block as a whole points at its first word.
   column_ = block_.stmts.empty() ? 0 : block_.stmts.front().column;
-  const bool axes_consumed = blockFrames();
-  executeToolWords();
+  // Both steps only for blocks with their words (tested here: no call for the usual block).
+  const bool axes_consumed =
+      (words_.frame_select || !words_.frame_command.empty() || words_.axial_offset != 0) &&
+      blockFrames();
+  if (words_.tool || words_.edge || words_.tool_change || words_.sum_offset) executeToolWords();
   if (carrier_.pending) executeCarrierWords();  // TCARR, TCOFR, PAROT, TOROT ... (rare)
   if (words_.rpl && words_.frame_command.empty())
     raise(AlarmNumber::SyntaxError, "RPL= only with ROT or AROT");

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <ostream>
 
+#include "core/inline_step.hpp"
 #include "ncoffset/alarm.hpp"
 #include "out/vars_json.hpp"
 
@@ -167,11 +168,52 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   flow_.clear();
 }
 
+// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, F and CR=, as
+// letterWord, gCode and extendedWord collect them, without the call. False: collectWord takes the
+// word (and raises any alarm).
+NCOFFSET_INLINE_STEP bool Interpreter::plainWord(const Stmt& st) {
+  if (st.name.size() != 1) {
+    if (st.name != "CR" || words_.cr || vars_.find(st.name)) return false;
+    words_.cr = st.literal_value;  // the circle radius (extendedWord)
+    return true;
+  }
+  const char c = st.name[0];
+  if (c >= 'X' && c <= 'Z') {
+    const int i = c - 'X';
+    if (words_.axis[i]) return false;  // programmed twice: collectWord's alarm
+    words_.axis[i] = true;
+    words_.axis_value[i] = st.literal_value;
+    words_.axis_mode[i] = st.mode;
+    return true;
+  }
+  if (c == 'G' && st.literal_int && st.literal_value >= 0 && st.literal_value <= 3) {
+    modal_.motion = static_cast<Motion>(static_cast<int>(st.literal_value));  // G0 G1 G2 G3
+    words_.motion_word = true;
+    return true;
+  }
+  if (c == 'F' && st.literal_value >= 0 && st.literal_value <= 1e9) {
+    words_.f = st.literal_value;
+    return true;
+  }
+  return false;
+}
+
 void Interpreter::executeBlock() {
   const lang::Block& b = block_;
   if (b.stmts.empty() && b.decls.empty()) return;  // empty, comment or label-only line
   words_.clear();
   ProgramLevel& lvl = flow_.level();
+  if (b.plain) [[likely]] {
+    // Only address words with a plain number (G1 X10 CR=5): no definition, jump or
+    // expression among them, so each goes straight to collectWord.
+    lvl.defs_allowed = false;
+    for (const Stmt& st : b.stmts) {
+      column_ = st.column;
+      if (!plainWord(st)) collectWord(st);
+    }
+    finishBlock();
+    return;
+  }
   bool jumped = false;
   for (size_t i = 0; i < b.stmts.size() && !jumped; ++i) {
     const Stmt& st = b.stmts[i];

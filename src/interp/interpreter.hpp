@@ -146,6 +146,7 @@ class Interpreter final : public lang::Environment {
 
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
+  bool plainWord(const lang::Stmt& st);  // X, Y, Z, G0..G3, F, CR= of a plain block, inline
   double wordValue(const lang::Stmt& st);
   void letterWord(const lang::Stmt& st);
   void programWord(char c, const lang::Stmt& st);

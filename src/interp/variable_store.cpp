@@ -65,17 +65,12 @@ void VariableStore::endRun(bool keep) {
   scopes_.clear();
 }
 
-UserVariable* VariableStore::find(std::string_view name) {
+UserVariable* VariableStore::findIn(std::string_view name) {
   auto& loc = current();
-  if (loc.empty() && globals_.empty()) return nullptr;  // the common case: no hashing
   if (auto it = loc.find(name); it != loc.end())
     return it->second.ref ? it->second.ref : &it->second;
   if (auto it = globals_.find(name); it != globals_.end()) return &it->second;
   return nullptr;
-}
-
-const UserVariable* VariableStore::find(std::string_view name) const {
-  return const_cast<VariableStore*>(this)->find(name);
 }
 
 const VariableMap& VariableStore::mainVariables() const {

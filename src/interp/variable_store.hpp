@@ -43,8 +43,13 @@ class VariableStore {
   void endRun(bool keep);
 
   // The variable `name` of the current level (or a global one), nullptr if there is none.
-  UserVariable* find(std::string_view name);
-  const UserVariable* find(std::string_view name) const;
+  UserVariable* find(std::string_view name) {
+    if (current().empty() && globals_.empty()) return nullptr;  // the common case: no call
+    return findIn(name);
+  }
+  const UserVariable* find(std::string_view name) const {
+    return const_cast<VariableStore*>(this)->find(name);
+  }
   // DEF, in two steps so that the initial values are evaluated before the variable exists:
   // the checks (alarms 12170 defined twice, 99004/99005 beyond the limits) and the variable
   // with its type's initial value, then adding it to the current level.
@@ -66,6 +71,7 @@ class VariableStore {
   VariableMap& current() { return scopes_.empty() ? main_vars_ : scopes_.back(); }
   const VariableMap& current() const { return scopes_.empty() ? main_vars_ : scopes_.back(); }
   void release(const VariableMap& scope);
+  UserVariable* findIn(std::string_view name);
 
   Limits limits_;
   std::vector<double> r_;

@@ -141,6 +141,9 @@ struct Block {
   bool has_number = false;  // N<no> or :<no>
   long long number = 0;
   std::string_view label;  // "LABEL:" (without the colon)
+  // Every statement is an address word with a plain number (Parser::simpleWords took the
+  // block): the interpreter collects them without looking at their kind.
+  bool plain = false;
   std::vector<Stmt> stmts;
   std::vector<Node> nodes;
   std::vector<int> args;
@@ -155,6 +158,7 @@ struct Block {
     has_number = false;
     number = 0;
     label = {};
+    plain = false;
     stmts.clear();
     nodes.clear();
     args.clear();

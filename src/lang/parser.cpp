@@ -65,12 +65,15 @@ void Parser::parse() {
 bool Parser::parseWritten() {
   skipSpaces();
   if (peek() == 'N' && isDigit(peek(1))) {
+    // One pass over the digits (the '\0' after the block ends it); more than 18 digits is
+    // left to the general path, which raises the alarm.
     size_t j = i_ + 1;
-    while (j < s_.size() && isDigit(s_[j])) ++j;
+    unsigned long long v = 0;
+    while (isDigit(s_[j])) v = v * 10 + static_cast<unsigned>(s_[j++] - '0');
     if (j - i_ - 1 > 18) return false;
-    ++i_;
+    i_ = j;
     b_.has_number = true;
-    b_.number = readInteger();
+    b_.number = static_cast<long long>(v);
   }
   return simpleWords();
 }

@@ -65,6 +65,7 @@ bool Parser::simpleWords() {
   }
   if (p != base + s_.size()) return give_up();  // a '\0' inside the block (not normalised)
   i_ = s_.size();
+  b_.plain = true;
   return true;
 }
 

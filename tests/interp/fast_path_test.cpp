@@ -1,0 +1,125 @@
+// The per-block fast paths of the front of the pipeline (docs/performance.md section 25) against
+// their general twins. A block of plain address words (G1 X10 CR=5) is parsed by
+// Parser::simpleWords and collected by the interpreter without looking at statement kinds; the
+// same block with ` S=(0)` appended (an S word with an expression, which does nothing here)
+// takes the general parser and the general statement loop. Random programs of such blocks
+// must give the same segments and the same alarm (number, line, column) both ways.
+#include <gtest/gtest.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ncoffset/channel.hpp"
+
+namespace ncoffset {
+namespace {
+
+class CollectSink final : public PathSink {
+ public:
+  std::vector<Segment> segments;
+  void segment(const Segment& s) override { segments.push_back(s); }
+  void finish(const Alarm*) override {}
+};
+
+struct Outcome {
+  std::vector<Segment> segments;
+  std::optional<Alarm> alarm;
+};
+
+Outcome run(const std::string& text) {
+  Outcome r;
+  CollectSink sink;
+  Channel ch;
+  RunResult result = ch.runText("T.MPF", text, sink);
+  r.segments = sink.segments;
+  r.alarm = result.alarm;
+  return r;
+}
+
+void expectSameVec(const Vec3& a, const Vec3& b) {
+  EXPECT_EQ(a.x, b.x);  // bit for bit: both ways compute the same
+  EXPECT_EQ(a.y, b.y);
+  EXPECT_EQ(a.z, b.z);
+}
+
+// The fast way's outcome, after comparing it with the general way's.
+Outcome expectSame(const std::string& fast_text, const std::string& general_text) {
+  SCOPED_TRACE(fast_text);
+  Outcome fast = run(fast_text);
+  const Outcome general = run(general_text);
+  EXPECT_EQ(fast.alarm.has_value(), general.alarm.has_value());
+  if (fast.alarm.has_value() != general.alarm.has_value()) return fast;
+  if (fast.alarm) {
+    EXPECT_EQ(fast.alarm->number, general.alarm->number);
+    EXPECT_EQ(fast.alarm->where.line, general.alarm->where.line);
+    EXPECT_EQ(fast.alarm->where.column, general.alarm->where.column);
+  }
+  EXPECT_EQ(fast.segments.size(), general.segments.size());
+  if (fast.segments.size() != general.segments.size()) return fast;
+  for (size_t i = 0; i < fast.segments.size(); ++i) {
+    const Segment& a = fast.segments[i];
+    const Segment& b = general.segments[i];
+    EXPECT_EQ(a.line, b.line);
+    EXPECT_EQ(a.motion, b.motion);
+    expectSameVec(a.start, b.start);
+    expectSameVec(a.end, b.end);
+    expectSameVec(a.centre, b.centre);
+    EXPECT_EQ(a.feed, b.feed);
+    EXPECT_EQ(a.has_feed, b.has_feed);
+  }
+  return fast;
+}
+
+TEST(FrontFastPath, PlainBlocksCollectAsTheGeneralPath) {
+  // The first 14 words raise no alarm in any order; the others may (G2 without its end or
+  // radius, G5, F-1, an address twice, ...).
+  const char* const words[] = {"G0",  "G1",  "G90", "G91", "G64", "M3",    "T1",    "D1",
+                               "F",   "X",   "Y",   "Z",   "S",   "X",     "G2",    "G3",
+                               "G17", "G18", "G5",  "G41", "G40", "M30",   "D0",    "F-",
+                               "I",   "J",   "K",   "CR=", "AR=", "TURN=", "DISC=", "OFFN="};
+  const unsigned safe = 14;
+  const char* const numbers[] = {"10", "-2.5", "0.125", "100", "+3", ".5", "7", "-40.75", "0"};
+  unsigned seed = 4711;
+  auto next = [&](unsigned n) {
+    seed = seed * 1103515245u + 12345u;
+    return (seed >> 16) % n;
+  };
+  int with_segments = 0, with_alarm = 0;
+  for (int program = 0; program < 300; ++program) {
+    std::string fast = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n";
+    const unsigned choice = program % 2 ? safe : sizeof words / sizeof *words;
+    std::string general = fast;
+    const unsigned blocks = 5 + next(25);
+    for (unsigned k = 0; k < blocks; ++k) {
+      std::string block;
+      if (next(3) == 0) {
+        block += 'N';
+        block += std::to_string(10 * (k + 1));
+        block += ' ';
+      }
+      const unsigned count = 1 + next(4);
+      for (unsigned w = 0; w < count; ++w) {
+        std::string word = words[next(choice)];
+        const char last = word.back();
+        if (last == '=' || (last >= 'A' && last <= 'Z') || last == '-')
+          word += numbers[next(sizeof numbers / sizeof *numbers)];
+        if (w) block += ' ';
+        block += word;
+      }
+      fast += block;
+      fast += '\n';
+      general += block;
+      general += " S=(0)\n";
+    }
+    const Outcome o = expectSame(fast, general);
+    with_segments += o.segments.size() > 2;
+    with_alarm += o.alarm.has_value();
+  }
+  // Both kinds of outcome occur often enough to compare something.
+  EXPECT_GT(with_segments, 60);
+  EXPECT_GT(with_alarm, 60);
+}
+
+}  // namespace
+}  // namespace ncoffset
