@@ -34,6 +34,9 @@ class RadiusCompensation final : public core::Stage {
   // Every motion block, in program order.
   core::Feedback motion(const core::MotionBlock& m) override;
   void programmed(const core::MotionBlock& m) override { out_.programmed(m); }
+  // Whether the stages behind draw the programmed path (PathSink::wantsProgrammed): without such
+  // a sink no block passes the virtual programmed() call (docs/performance.md §26).
+  void passProgrammed(bool on) { pass_programmed_ = on; }
   void warning(const core::MotionBlock& at, int number, const std::string& text) override {
     out_.warning(at, number, text);
   }
@@ -173,6 +176,7 @@ class RadiusCompensation final : public core::Stage {
   double side() const { return sideOf(settings_); }
 
   core::Stage& out_;
+  bool pass_programmed_ = true;  // set per run by the channel
   State state_ = State::Off;
   core::MotionBlock selection_;             // the G41/G42 block waiting for the first element
   std::vector<core::MotionBlock> waiting_;  // blocks without plane motion after the selection
