@@ -169,9 +169,9 @@ class RadiusCompensation final : public core::Stage {
 
   // +1: compensated to the left of travel. G41: left of the direction of travel; a negative
   // compensation value changes the side (PM-NC p256).
+  // (Two flags compared, no branch: asked three times a block.)
   static double sideOf(const core::TrcSettings& t) {
-    const double s = t.mode == core::TrcMode::Left ? 1.0 : -1.0;
-    return t.radius < 0 ? -s : s;
+    return (t.mode == core::TrcMode::Left) != (t.radius < 0) ? 1.0 : -1.0;
   }
   double side() const { return sideOf(settings_); }
 
