@@ -17,6 +17,12 @@ static_assert(24 + 7 * kRoundedRoom <= kMaxRow);
 
 constexpr const char* kHeader = "line,motion,x,y,z,cx,cy,cz,feed\n";
 
+// ",v" at p; returns the end.
+inline char* writeField(char* p, double v) {
+  *p = ',';
+  return writeShortest(p + 1, v);
+}
+
 }  // namespace
 
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
@@ -38,15 +44,14 @@ void CsvWriter::segment(const Segment& s) {
   *p++ = m[1];
   if (m[2] != 0) [[unlikely]]  // G33, G331, G63, ...
     for (const char* c = m + 2; *c; ++c) *p++ = *c;
-  for (double v : {s.end.x, s.end.y, s.end.z}) {
-    *p++ = ',';
-    p = writeShortest(p, v);
-  }
+  // (Written out, not a loop over an initializer list: that copied the three values first.)
+  p = writeField(p, s.end.x);
+  p = writeField(p, s.end.y);
+  p = writeField(p, s.end.z);
   if (s.motion == Motion::G2 || s.motion == Motion::G3) {
-    for (double v : {s.centre.x, s.centre.y, s.centre.z}) {
-      *p++ = ',';
-      p = writeShortest(p, v);
-    }
+    p = writeField(p, s.centre.x);
+    p = writeField(p, s.centre.y);
+    p = writeField(p, s.centre.z);
   } else {
     *p++ = ',';
     *p++ = ',';
