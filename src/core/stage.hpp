@@ -22,6 +22,10 @@ struct ApproachPoints {
 
 // What a stage feeds back to the interpreter for one block.
 struct Feedback {
+  // User-provided, so that `return {}` (every stage, every block) only clears the two flags of
+  // the optionals: value-initialising the aggregate zeroed all its 96 bytes (16 instructions a
+  // return, docs/performance.md §26).
+  Feedback() {}  // NOLINT(modernize-use-equals-default)
   // Where the tool is after the block when that differs from the programmed end point (a SAR
   // retraction whose end point is implicit), WCS.
   std::optional<Vec3> end_point;

@@ -14,6 +14,7 @@ RunResult Channel::Impl::run(std::shared_ptr<lang::SourceFile> src, PathSink& ou
                              bool finish) {
   sink.target = &out;
   placement.beginRun([this](int id) -> const std::string& { return interp.fileName(id); });
+  trc.passProgrammed(placement.wantsProgrammed());
   RunResult r;
   try {
     interp::LoadedProgram& prog = interp.load(std::move(src), init);

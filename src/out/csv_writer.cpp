@@ -17,6 +17,12 @@ static_assert(24 + 7 * kRoundedRoom <= kMaxRow);
 
 constexpr const char* kHeader = "line,motion,x,y,z,cx,cy,cz,feed\n";
 
+// ",v" at p; returns the end.
+inline char* writeField(char* p, double v) {
+  *p = ',';
+  return writeShortest(p + 1, v);
+}
+
 }  // namespace
 
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
@@ -32,21 +38,22 @@ void CsvWriter::segment(const Segment& s) {
   char* const row = b.data() + used;
   char* p = s.line >= 0 ? writeUnsigned(row, static_cast<unsigned>(s.line))
                         : std::to_chars(row, row + 11, s.line).ptr;
-  const char* m = motionName(s.motion);
   *p++ = ',';
-  *p++ = m[0];
-  *p++ = m[1];
-  if (m[2] != 0) [[unlikely]]  // G33, G331, G63, ...
-    for (const char* c = m + 2; *c; ++c) *p++ = *c;
-  for (double v : {s.end.x, s.end.y, s.end.z}) {
-    *p++ = ',';
-    p = writeShortest(p, v);
+  static_assert(static_cast<int>(Motion::G0) == 0 && static_cast<int>(Motion::G3) == 3);
+  if (s.motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call
+    *p++ = 'G';
+    *p++ = static_cast<char>('0' + static_cast<int>(s.motion));
+  } else {  // G33, G331, G63, ...
+    for (const char* c = motionName(s.motion); *c; ++c) *p++ = *c;
   }
+  // (Written out, not a loop over an initializer list: that copied the three values first.)
+  p = writeField(p, s.end.x);
+  p = writeField(p, s.end.y);
+  p = writeField(p, s.end.z);
   if (s.motion == Motion::G2 || s.motion == Motion::G3) {
-    for (double v : {s.centre.x, s.centre.y, s.centre.z}) {
-      *p++ = ',';
-      p = writeShortest(p, v);
-    }
+    p = writeField(p, s.centre.x);
+    p = writeField(p, s.centre.y);
+    p = writeField(p, s.centre.z);
   } else {
     *p++ = ',';
     *p++ = ',';

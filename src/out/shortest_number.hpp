@@ -53,6 +53,22 @@ inline char* writeUnsigned(char* out, unsigned v) {
   return std::to_chars(out, out + 10, v).ptr;
 }
 
+// Writes v < 1000 as exactly three digits ("007") and returns the end.
+inline char* writeThreeDigits(char* out, unsigned v) {
+  *out = static_cast<char>('0' + v / 100);
+  std::memcpy(out + 1, kDigitPairs + 2 * (v % 100), 2);
+  return out + 3;
+}
+
+// The trailing zeros of the three digits of 1..999 (of[0] is not used).
+struct TrailingZeros {
+  unsigned char of[1000] = {};
+  constexpr TrailingZeros() {
+    for (int i = 1; i < 1000; ++i) of[i] = i % 100 == 0 ? 2 : i % 10 == 0 ? 1 : 0;
+  }
+};
+inline constexpr TrailingZeros kTrailingZeros{};
+
 // The fast path of writeShortest, inline for writers that put out many numbers per row: v in
 // fixed notation when it is a whole number or has at most six decimals and lies below 1e9 (the
 // coordinates, feeds and centres of real programs), else nullptr.
@@ -76,14 +92,14 @@ inline char* writeFixed(char* out, double v) {
   if (v < 0) *out++ = '-';
   out = writeUnsigned(out, static_cast<unsigned>(m / 1000000));
   const auto frac = static_cast<unsigned>(m % 1000000);  // not 0: v is no whole number
-  // Six digits as three pairs, then the trailing zeros cut off.
+  // Two groups of three digits; at most three decimals (most CAM output) write only the first.
+  // Trailing zeros are cut off by the table, without a loop over the digits.
   *out++ = '.';
-  std::memcpy(out, kDigitPairs + 2 * (frac / 10000), 2);
-  std::memcpy(out + 2, kDigitPairs + 2 * (frac / 100 % 100), 2);
-  std::memcpy(out + 4, kDigitPairs + 2 * (frac % 100), 2);
-  out += 6;
-  while (out[-1] == '0') --out;  // frac > 0: stops at a non-zero digit
-  return out;
+  const unsigned hi = frac / 1000, lo = frac % 1000;
+  out = writeThreeDigits(out, hi);
+  if (lo == 0) return out - kTrailingZeros.of[hi];  // hi > 0, as frac > 0
+  out = writeThreeDigits(out, lo);
+  return out - kTrailingZeros.of[lo];
 }
 
 // Every other double, as {fmt}'s "{}" writes it (out of line: the float-to-decimal conversion).

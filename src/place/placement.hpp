@@ -37,6 +37,8 @@ class Placement final : public core::Stage {
     if (wants_programmed_) programmedSegment(m);
   }
   void warning(const core::MotionBlock& m, int number, const std::string& text) override;
+  // Whether the sink draws the programmed path (read at beginRun).
+  bool wantsProgrammed() const { return wants_programmed_; }
   // The interpreter's motion number (MotionBlock::seq) of the segment being written.
   long long seq() const { return seq_; }
 

@@ -36,8 +36,9 @@ class PieceWindow {
   }
 
  private:
-  // The capacity stays a power of two, so an index is a mask, not a division.
-  void grow() {
+  // The capacity stays a power of two, so an index is a mask, not a division. (Out of line and
+  // cold, so that pushBack, once a block, is inlined.)
+  [[gnu::noinline, gnu::cold]] void grow() {
     std::vector<T> bigger(slots_.empty() ? 8 : slots_.size() * 2);
     for (size_t i = 0; i < size_; ++i) bigger[i] = std::move((*this)[i]);
     slots_ = std::move(bigger);

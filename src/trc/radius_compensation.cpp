@@ -90,7 +90,8 @@ void RadiusCompensation::blockWithoutMotion() {
 }
 
 core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
-  out_.programmed(m);
+  if (pass_programmed_) [[unlikely]]
+    out_.programmed(m);
   switch (state_) {
     case State::Off: {
       // (Here, not in startSelection: the path of every block without compensation.)

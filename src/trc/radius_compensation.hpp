@@ -37,6 +37,9 @@ class RadiusCompensation final : public core::Stage {
   // Every motion block, in program order.
   core::Feedback motion(const core::MotionBlock& m) override;
   void programmed(const core::MotionBlock& m) override { out_.programmed(m); }
+  // Whether the stages behind draw the programmed path (PathSink::wantsProgrammed): without such
+  // a sink no block passes the virtual programmed() call (docs/performance.md §26).
+  void passProgrammed(bool on) { pass_programmed_ = on; }
   void warning(const core::MotionBlock& at, int number, const std::string& text) override {
     out_.warning(at, number, text);
   }
@@ -193,13 +196,14 @@ class RadiusCompensation final : public core::Stage {
 
   // +1: compensated to the left of travel. G41: left of the direction of travel; a negative
   // compensation value changes the side (PM-NC p256).
+  // (Two flags compared, no branch: asked three times a block.)
   static double sideOf(const core::TrcSettings& t) {
-    const double s = t.mode == core::TrcMode::Left ? 1.0 : -1.0;
-    return t.radius < 0 ? -s : s;
+    return (t.mode == core::TrcMode::Left) != (t.radius < 0) ? 1.0 : -1.0;
   }
   double side() const { return sideOf(settings_); }
 
   core::Stage& out_;
+  bool pass_programmed_ = true;  // set per run by the channel
   State state_ = State::Off;
   core::MotionBlock selection_;             // the G41/G42 block waiting for the first element
   std::vector<core::MotionBlock> waiting_;  // blocks without plane motion after the selection

@@ -180,7 +180,7 @@ void SmoothApproach::pass(const MotionBlock& m) {
   PlaneAxes pa = planeAxes(m.plane);
   if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > tol::kPoint ||
       std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > tol::kPoint)
-    last_ = LastContour{m.plane, m.motion, m.start, m.end, m.centre};
+    last_ = LastContour{true, m.plane, m.motion, m.start, m.end, m.centre};
   last_trc_mode_ = m.trc.mode;
   last_trc_radius_ = m.trc.radius;
   out_.motion(m);
@@ -323,18 +323,18 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
 
 void SmoothApproach::retraction(const MotionBlock& s) {
   const SarRequest& q = s.sar;
-  if (!last_)
+  if (!last_.valid)
     sarAlarm(AlarmNumber::SarNoDirection,
              "SAR: no valid retraction direction: no contour block before the SAR block", s.line);
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p4 = s.start;
   MotionBlock last = s;
-  last.plane = last_->plane;
-  last.motion = last_->motion;
-  last.start = last_->start;
-  last.end = last_->end;
-  last.centre = last_->centre;
+  last.plane = last_.plane;
+  last.motion = last_.motion;
+  last.start = last_.start;
+  last.end = last_.end;
+  last.centre = last_.centre;
   const Vec2 t = tangent(last, true);
   TrcSettings active = s.trc;  // with G40 in the block: the side active before it
   if (s.trc.mode == TrcMode::Off) {

@@ -50,12 +50,14 @@ class SmoothApproach final : public core::Stage {
   int held_dummies_ = 0;                 // blocks without motion in between
   // The last block with plane motion that went through (for the retraction's tangent).
   // (Only what the tangent needs: copying whole blocks cost 100 instructions a block.)
+  // (A flag, not std::optional: filled field by field in place, once a block.)
   struct LastContour {
+    bool valid = false;
     Plane plane = Plane::G17;
     Motion motion = Motion::G1;
     Vec3 start, end, centre;
   };
-  std::optional<LastContour> last_;
+  LastContour last_;
   core::TrcMode last_trc_mode_ = core::TrcMode::Off;  // of the last block
   double last_trc_radius_ = 0;
   core::ApproachPoints points_;  // of the last evaluated approach

@@ -87,6 +87,19 @@ TEST(ShortestNumber, SameTextAsFmtForRandomValues) {
   }
 }
 
+// Every fraction of up to six decimals (the fast path's two groups of three digits and the
+// table of their trailing zeros), with random whole parts, both signs, against {fmt}.
+TEST(ShortestNumber, EveryMicroFractionAsFmt) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<long long> large(0, 999999999), small(0, 999);
+  for (long long f = 1; f < 1000000; ++f) {
+    const long long whole = f % 2 ? small(rng) : large(rng);
+    const double v = static_cast<double>(whole * 1000000 + f) / 1e6;
+    ASSERT_EQ(viaInline(v), viaFmt(v)) << v;
+    ASSERT_EQ(viaInline(-v), viaFmt(-v)) << -v;
+  }
+}
+
 TEST(ShortestNumber, UnsignedAsToString) {
   char text[16];
   for (unsigned v = 0; v < 100000; ++v)
