@@ -298,6 +298,9 @@ class Interpreter final : public lang::Environment {
   VariableStore vars_;  // after data_: MD28050 sizes the R parameters
   ModalState modal_;
   BlockWords words_;
+  // The last block's words were all collected by plainWord and nothing after it wrote to
+  // words_ (executeBlock): the next block clears them with BlockWords::clearPlain.
+  bool words_plain_ = false;
   ContourWords contour_words_;  // valid when words_.contour
   ContourState contour_;
   bool contour_active_ = false;  // RNDM, CIP/CT or a pending ANG block: every block looks
