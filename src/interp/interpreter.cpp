@@ -219,7 +219,7 @@ void Interpreter::executeBlock() {
     }
     // Block end writes to words_ only in a contour definition, a carrier change or MCALL.
     all_plain = all_plain && !contour_active_ && !carrier_.pending && !mcall_.active;
-    finishBlock();
+    all_plain ? finishPlainBlock() : finishBlock();
     words_plain_ = all_plain;
     return;
   }

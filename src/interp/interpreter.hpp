@@ -161,7 +161,8 @@ class Interpreter final : public lang::Environment {
   void gNotModelled(int g);
   void setSar(core::SarKind kind);
   void finishBlock();
-  bool blockFrames();  // the frame words of the block; true when they took its axis values
+  void finishPlainBlock();  // finishBlock for the words of plainWord alone (block_executor.cpp)
+  bool blockFrames();       // the frame words of the block; true when they took its axis values
   void doFrameCommand();
   double toMm(double v) const;
 
