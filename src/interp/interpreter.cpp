@@ -211,8 +211,8 @@ void Interpreter::executeBlock() {
     lvl.defs_allowed = false;
     bool all_plain = true;
     for (const Stmt& st : b.stmts) {
-      column_ = st.column;
-      if (!plainWord(st)) {
+      if (!plainWord(st)) {  // plainWord raises no alarm: only collectWord needs the column
+        column_ = st.column;
         all_plain = false;
         collectWord(st);
       }
