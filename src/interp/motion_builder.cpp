@@ -58,7 +58,7 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
     }
     double v = toMm(modal, w.axis_value[i]) * factor;
     target[i] = absolute ? v : from[i] + v;
-    if (!std::isfinite(target[i]) || std::fabs(target[i]) > 1e9)
+    if (!(std::fabs(target[i]) <= 1e9))  // beyond, infinite or NaN: one comparison
       raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: position {} of axis {}", target[i], "XYZ"[i]));
   }
