@@ -103,6 +103,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
                                                   : options_.limits.max_blocks_auto_base);
   if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
+  words_plain_ = false;
   std::string_view text;
   const size_t max_len = options_.limits.max_line_length;
   while (!ended_) {
@@ -200,18 +201,26 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainWord(const Stmt& st) {
 
 void Interpreter::executeBlock() {
   const lang::Block& b = block_;
-  if (b.stmts.empty() && b.decls.empty()) return;  // empty, comment or label-only line
-  words_.clear();
+  if (b.stmts.empty() && b.decls.empty()) return;       // empty, comment or label-only line
+  words_plain_ ? words_.clearPlain() : words_.clear();  // clearPlain: 9 stores, not 300 bytes
+  words_plain_ = false;  // until this block is through without an alarm
   ProgramLevel& lvl = flow_.level();
   if (b.plain) [[likely]] {
     // Only address words with a plain number (G1 X10 CR=5): no definition, jump or
     // expression among them, so each goes straight to collectWord.
     lvl.defs_allowed = false;
+    bool all_plain = true;
     for (const Stmt& st : b.stmts) {
-      column_ = st.column;
-      if (!plainWord(st)) collectWord(st);
+      if (!plainWord(st)) {  // plainWord raises no alarm: only collectWord needs the column
+        column_ = st.column;
+        all_plain = false;
+        collectWord(st);
+      }
     }
-    finishBlock();
+    // Block end writes to words_ only in a contour definition, a carrier change or MCALL.
+    all_plain = all_plain && !contour_active_ && !carrier_.pending && !mcall_.active;
+    all_plain ? finishPlainBlock() : finishBlock();
+    words_plain_ = all_plain;
     return;
   }
   bool jumped = false;

@@ -161,7 +161,8 @@ class Interpreter final : public lang::Environment {
   void gNotModelled(int g);
   void setSar(core::SarKind kind);
   void finishBlock();
-  bool blockFrames();  // the frame words of the block; true when they took its axis values
+  void finishPlainBlock();  // finishBlock for the words of plainWord alone (block_executor.cpp)
+  bool blockFrames();       // the frame words of the block; true when they took its axis values
   void doFrameCommand();
   double toMm(double v) const;
 
@@ -298,6 +299,9 @@ class Interpreter final : public lang::Environment {
   VariableStore vars_;  // after data_: MD28050 sizes the R parameters
   ModalState modal_;
   BlockWords words_;
+  // The last block's words were all collected by plainWord and nothing after it wrote to
+  // words_ (executeBlock): the next block clears them with BlockWords::clearPlain.
+  bool words_plain_ = false;
   ContourWords contour_words_;  // valid when words_.contour
   ContourState contour_;
   bool contour_active_ = false;  // RNDM, CIP/CT or a pending ANG block: every block looks

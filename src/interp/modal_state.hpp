@@ -97,6 +97,15 @@ struct BlockWords {
   int column = 0;
 
   void clear();
+  // clear() for words that Interpreter::plainWord alone set (X, Y, Z, G0..G3, F, CR=): only
+  // those fields differ from an empty instance, so resetting them is the same as clear().
+  void clearPlain() {
+    axis[0] = axis[1] = axis[2] = false;
+    axis_value[0] = axis_value[1] = axis_value[2] = 0;
+    cr.reset();
+    motion_word = false;
+    f.reset();
+  }
 };
 // All members are plain values: a copy of one empty instance clears a block's words (cheaper
 // than constructing a new one for every block).

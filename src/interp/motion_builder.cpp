@@ -58,7 +58,7 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
     }
     double v = toMm(modal, w.axis_value[i]) * factor;
     target[i] = absolute ? v : from[i] + v;
-    if (!std::isfinite(target[i]) || std::fabs(target[i]) > 1e9)
+    if (!(std::fabs(target[i]) <= 1e9))  // beyond, infinite or NaN: one comparison
       raise(AlarmNumber::ValueRange,
             fmt::format("value range exceeded: position {} of axis {}", target[i], "XYZ"[i]));
   }
@@ -283,17 +283,36 @@ Vec3 MotionBuilder::tipVector(Plane plane) {
   return tip;
 }
 
+namespace {
+
+// Beyond the machine's number range or not a number (|v| <= 1e9 is false for NaN). Without
+// branches: the usual block is within.
+inline bool outOfRange(const Vec3& p) {
+  return !(std::fabs(p.x) <= 1e9) | !(std::fabs(p.y) <= 1e9) | !(std::fabs(p.z) <= 1e9);
+}
+
+}  // namespace
+
 NCOFFSET_INLINE_STEP void MotionBuilder::checkRange(bool plain) const {
   const core::MotionBlock& m = m_;
   // Computed geometry must stay finite and within the machine's number range: a frame with a
   // huge scale or a circle with a huge radius ends here, never as NaN or 1e300 in the output.
-  // The end point, and a circle's centre (a line has none).
+  // The end point, and a circle's centre (a line has none). One test for the usual case; the
+  // alarm names the first axis beyond (rangeAlarm).
+  const bool circle = m.motion == Motion::G2 || m.motion == Motion::G3;
+  if (outOfRange(toBcs(plain, m.end) + applied_offset_) |
+      (circle && outOfRange(toBcs(plain, m.centre)))) [[unlikely]]
+    rangeAlarm(plain);
+}
+
+void MotionBuilder::rangeAlarm(bool plain) const {
+  const core::MotionBlock& m = m_;
   const Vec3 checks[] = {toBcs(plain, m.end) + applied_offset_, toBcs(plain, m.centre)};
   const int n_checks = m.motion == Motion::G2 || m.motion == Motion::G3 ? 2 : 1;
   for (int c = 0; c < n_checks; ++c)
     for (int i = 0; i < 3; ++i) {
       const Vec3& p = checks[c];
-      if (std::fabs(p[i]) <= 1e9) continue;  // the usual case: one comparison (false for NaN)
+      if (std::fabs(p[i]) <= 1e9) continue;
       if (!std::isfinite(p[i]))
         raise(AlarmNumber::Arithmetic,
               "arithmetic error in part program: position is not a finite number");

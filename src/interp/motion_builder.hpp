@@ -86,6 +86,7 @@ class MotionBuilder {
   // The edge's P - S under the block's frame (turning tools only).
   Vec3 tipVector(Plane plane);
   void checkRange(bool plain) const;
+  [[gnu::cold]] void rangeAlarm(bool plain) const;  // what checkRange found
   void sarRequest(const BlockWords& w, const ModalState& modal, const BlockContext& at);
   Vec3 toBcs(bool plain, const Vec3& p) const { return plain ? p : frame().apply(p); }
   const Affine& frame() const { return suppressed_ ? kNoFrame.map() : frames_.map(); }

@@ -71,24 +71,19 @@ Outcome expectSame(const std::string& fast_text, const std::string& general_text
   return fast;
 }
 
-TEST(FrontFastPath, PlainBlocksCollectAsTheGeneralPath) {
-  // The first 14 words raise no alarm in any order; the others may (G2 without its end or
-  // radius, G5, F-1, an address twice, ...).
-  const char* const words[] = {"G0",  "G1",  "G90", "G91", "G64", "M3",    "T1",    "D1",
-                               "F",   "X",   "Y",   "Z",   "S",   "X",     "G2",    "G3",
-                               "G17", "G18", "G5",  "G41", "G40", "M30",   "D0",    "F-",
-                               "I",   "J",   "K",   "CR=", "AR=", "TURN=", "DISC=", "OFFN="};
-  const unsigned safe = 14;
+// Random programs of 5..29 blocks of 1..4 words from `words` (a number after each word that
+// ends in a letter, '=' or '-'), each compared with its twin; odd programs take only the first
+// `safe` words. Counts the programs with segments and with an alarm.
+void compareRandomPrograms(const std::vector<const char*>& words, unsigned safe, unsigned seed,
+                           int& with_segments, int& with_alarm) {
   const char* const numbers[] = {"10", "-2.5", "0.125", "100", "+3", ".5", "7", "-40.75", "0"};
-  unsigned seed = 4711;
   auto next = [&](unsigned n) {
     seed = seed * 1103515245u + 12345u;
     return (seed >> 16) % n;
   };
-  int with_segments = 0, with_alarm = 0;
   for (int program = 0; program < 300; ++program) {
     std::string fast = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n";
-    const unsigned choice = program % 2 ? safe : sizeof words / sizeof *words;
+    const unsigned choice = program % 2 ? safe : static_cast<unsigned>(words.size());
     std::string general = fast;
     const unsigned blocks = 5 + next(25);
     for (unsigned k = 0; k < blocks; ++k) {
@@ -116,8 +111,35 @@ TEST(FrontFastPath, PlainBlocksCollectAsTheGeneralPath) {
     with_segments += o.segments.size() > 2;
     with_alarm += o.alarm.has_value();
   }
+}
+
+TEST(FrontFastPath, PlainBlocksCollectAsTheGeneralPath) {
+  // The first 14 words raise no alarm in any order; the others may (G2 without its end or
+  // radius, G5, F-1, an address twice, ...).
+  const std::vector<const char*> words = {
+      "G0", "G1", "G90", "G91", "G64", "M3",  "T1",  "D1",    "F",     "X",    "Y",
+      "Z",  "S",  "X",   "G2",  "G3",  "G17", "G18", "G5",    "G41",   "G40",  "M30",
+      "D0", "F-", "I",   "J",   "K",   "CR=", "AR=", "TURN=", "DISC=", "OFFN="};
+  int with_segments = 0, with_alarm = 0;
+  compareRandomPrograms(words, 14, 4711, with_segments, with_alarm);
   // Both kinds of outcome occur often enough to compare something.
   EXPECT_GT(with_segments, 60);
+  EXPECT_GT(with_alarm, 60);
+}
+
+// A block whose words plainWord collected alone is cleared for the next block by resetting only
+// those words (BlockWords::clearPlain, docs/performance.md section 27): plain blocks after
+// blocks with other words, contour definitions (CHF=, RND=, RNDM=, which keep block end writing
+// to the words) and dwells must give what the general path gives.
+TEST(FrontFastPath, PlainBlocksAfterOtherBlocksAsTheGeneralPath) {
+  const std::vector<const char*> words = {
+      "G1",  "X",   "Y",   "Z",   "F",  "RND=",  "RNDM=", "M3",  "T1", "D1",  "G91",   "G90",
+      "G64", "G0",  "CR=", "G2",  "G3", "CHF=",  "G4",    "I",   "J",  "AR=", "TURN=", "OFFN=",
+      "G41", "G40", "G17", "G18", "F-", "DISC=", "G5",    "M30", "D0", "K",   "X"};
+  int with_segments = 0, with_alarm = 0;
+  compareRandomPrograms(words, 13, 815, with_segments, with_alarm);
+  // The contour words end many programs with an alarm: fewer run through (32 of 300).
+  EXPECT_GT(with_segments, 25);
   EXPECT_GT(with_alarm, 60);
 }
 
