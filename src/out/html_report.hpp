@@ -33,7 +33,7 @@ struct ReportContext {
   std::function<AxisDynamics()> dynamics;                           // asked at the first segment
 };
 
-class HtmlReport final : public PathSink {
+class HtmlReport : public PathSink {
  public:
   static constexpr int kMaxNotes = 1000;         // warnings and messages listed
   static constexpr int kMaxToolSlots = 1000;     // tool / edge / offset combinations listed

@@ -13,7 +13,7 @@
 
 namespace ncoffset::out {
 
-class MpfWriter final : public PathSink {
+class MpfWriter : public PathSink {
  public:
   // coords: "mcs" or "wcs", named in the header comment. names: file names for a comment
   // where the source file of the blocks changes (may be empty: line numbers only). decimals:

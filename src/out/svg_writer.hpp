@@ -28,7 +28,7 @@ View viewFromName(std::string_view name);
 // control characters as spaces, bytes that are no valid UTF-8 as U+FFFD.
 void appendXmlEscaped(fmt::memory_buffer& b, std::string_view s);
 
-class SvgWriter final : public PathSink {
+class SvgWriter : public PathSink {
  public:
   // standalone: a whole SVG file (XML declaration); otherwise the bare <svg> element, for
   // inlining into HTML. decimals: of the path's coordinates (--decimals; -1: the shortest

@@ -45,8 +45,9 @@ class BufferedWriter {
   fmt::memory_buffer buf_;
 };
 
-// Numbers as the shortest text that reads back as the same double.
-class CsvWriter final : public PathSink {
+// Numbers as the shortest text that reads back as the same double. (The writers are not final:
+// the CLI extends them with printing MSG texts, tools/ncoffset/message_sinks.hpp.)
+class CsvWriter : public PathSink {
  public:
   explicit CsvWriter(std::FILE* f);
   void segment(const Segment& s) override;
@@ -68,7 +69,7 @@ bool extendCsvHeader(BufferedWriter& w, AxisColumns& axes, const std::vector<std
 
 // The same columns with numbers of at most `decimals` (0..17) decimals (--decimals,
 // shortest_number.hpp writeRounded). A class of its own: CsvWriter's row stays as it is.
-class RoundedCsvWriter final : public PathSink {
+class RoundedCsvWriter : public PathSink {
  public:
   RoundedCsvWriter(std::FILE* f, int decimals);
   void segment(const Segment& s) override;
@@ -84,7 +85,7 @@ class RoundedCsvWriter final : public PathSink {
   int decimals_;
 };
 
-class JsonLinesWriter final : public PathSink {
+class JsonLinesWriter : public PathSink {
  public:
   JsonLinesWriter(std::FILE* f, FileNames names, int decimals = -1)
       : w_(f), names_(std::move(names)), decimals_(decimals) {}

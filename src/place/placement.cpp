@@ -12,52 +12,51 @@ using core::Geometry;
 using core::MotionBlock;
 
 // (Inlined into its callers, one a segment: the Segment is built in place, 10 % of the
-// placement's instructions, docs/performance.md §26.)
+// placement's instructions, docs/performance.md §26. Its fields are computed first and the
+// Segment initialised from them at once, one object returned on every path: `Segment s;` zeroed
+// all of it before the fields were written, §28.)
 NCOFFSET_INLINE_STEP Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
-  Segment s;
-  s.line = m.line;
-  s.file = m.file;
-  s.motion = g.motion;
-  s.turns = g.turns;
-  s.feed = m.feed;
-  s.feed_unit = m.feed_unit;
-  s.has_feed = m.has_feed;
-  s.lead_change = m.lead_change;
   Vec3 normal;
   normal[g.applicate] = 1;
+  Vec3 start, end, centre;
+  Motion motion = g.motion;
   if (coords_ == CoordSystem::WCS) {
-    s.start = g.start;
-    s.end = g.end;
-    s.centre = g.centre;
-    s.normal = normal;
+    start = g.start;
+    end = g.end;
+    centre = g.centre;
   } else if (m.frame.isIdentity()) {  // no frame: only the tool offset
-    s.start = g.start + m.tool_offset;
-    s.end = g.end + m.tool_offset;
-    if (g.motion == Motion::G2 || g.motion == Motion::G3) s.centre = g.centre + m.tool_offset;
-    s.normal = normal;
-  } else {
-    s.start = m.frame.map().apply(g.start) + m.tool_offset;
-    s.end = m.frame.map().apply(g.end) + m.tool_offset;
-    if (g.motion == Motion::G2 || g.motion == Motion::G3) {
-      s.centre = m.frame.map().apply(g.centre) + m.tool_offset;
-      // The arc turns about frame * normal; a mirrored frame (det < 0) reverses its sense.
-      Vec3 n = m.frame.linear() * normal;
-      double len = norm(n);
-      s.normal = len > 0 ? (1.0 / len) * n : normal;
-      bool flip = m.frame.linear().determinant() < 0;
-      // Report the sense as seen from the positive end of the dominant machine axis.
-      int dom = 0;
-      for (int i = 1; i < 3; ++i)
-        if (std::fabs(s.normal[i]) > std::fabs(s.normal[dom])) dom = i;
-      if (s.normal[dom] < 0) {
-        s.normal = -1.0 * s.normal;
-        flip = !flip;
-      }
-      if (flip) s.motion = g.motion == Motion::G2 ? Motion::G3 : Motion::G2;
-    }
+    start = g.start + m.tool_offset;
+    end = g.end + m.tool_offset;
+    if (g.motion == Motion::G2 || g.motion == Motion::G3) centre = g.centre + m.tool_offset;
+  } else [[unlikely]] {
+    framedPoints(m, g, start, end, centre, normal, motion);
   }
+  Segment s{m.line, m.file,  motion, start,       end,        centre,
+            normal, g.turns, m.feed, m.feed_unit, m.has_feed, m.lead_change};
   if (g.tip_at != core::kTipNone) addTip(s, m, g);  // turning tools with TRC only
   return s;
+}
+
+void Placement::framedPoints(const MotionBlock& m, const Geometry& g, Vec3& start, Vec3& end,
+                             Vec3& centre, Vec3& normal, Motion& motion) const {
+  start = m.frame.map().apply(g.start) + m.tool_offset;
+  end = m.frame.map().apply(g.end) + m.tool_offset;
+  if (g.motion != Motion::G2 && g.motion != Motion::G3) return;
+  centre = m.frame.map().apply(g.centre) + m.tool_offset;
+  // The arc turns about frame * normal; a mirrored frame (det < 0) reverses its sense.
+  const Vec3 n = m.frame.linear() * normal;
+  const double len = norm(n);
+  if (len > 0) normal = (1.0 / len) * n;
+  bool flip = m.frame.linear().determinant() < 0;
+  // Report the sense as seen from the positive end of the dominant machine axis.
+  int dom = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(normal[i]) > std::fabs(normal[dom])) dom = i;
+  if (normal[dom] < 0) {
+    normal = -1.0 * normal;
+    flip = !flip;
+  }
+  if (flip) motion = g.motion == Motion::G2 ? Motion::G3 : Motion::G2;
 }
 
 void Placement::addTip(Segment& s, const MotionBlock& m, const Geometry& g) const {

@@ -63,6 +63,9 @@ class Placement final : public core::Stage {
   void rejoin(Segment& s, const core::MotionBlock& m, Joint& j) const;
   void programmedSegment(const core::MotionBlock& m);
   Segment toSegment(const core::MotionBlock& m, const core::Geometry& g) const;
+  // toSegment's points, normal and sense under a frame (MCS coordinates; out of line: rare).
+  void framedPoints(const core::MotionBlock& m, const core::Geometry& g, Vec3& start, Vec3& end,
+                    Vec3& centre, Vec3& normal, Motion& motion) const;
   // P - S at the points of `g` on the path of S (core::TipAt).
   void addTip(Segment& s, const core::MotionBlock& m, const core::Geometry& g) const;
 

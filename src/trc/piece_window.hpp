@@ -18,6 +18,19 @@ class PieceWindow {
   const T& operator[](size_t i) const { return slots_[(head_ + i) & mask_]; }
   T& front() { return (*this)[0]; }
   T& back() { return (*this)[size_ - 1]; }
+  // Whether an element satisfies `pred`, asked in slot order (not in window order): a pointer
+  // walk over the one or two runs of slots the window occupies, without the index arithmetic of
+  // operator[] (the compensation asks it once a block, docs/performance.md §28).
+  template <typename Pred>
+  bool any(Pred pred) const {
+    const T* const s = slots_.data();
+    const size_t first = capacity_ - head_ < size_ ? capacity_ - head_ : size_;  // up to the end
+    for (const T *p = s + head_, *e = p + first; p != e; ++p)
+      if (pred(*p)) return true;
+    for (const T *p = s, *e = s + (size_ - first); p != e; ++p)  // wrapped to the start
+      if (pred(*p)) return true;
+    return false;
+  }
   // A slot at the back to fill (it may hold an old element: the caller assigns all of it).
   T& pushBack() {
     if (size_ == capacity_) grow();

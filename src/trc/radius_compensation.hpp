@@ -154,9 +154,7 @@ class RadiusCompensation final : public core::Stage {
   // A junction of the window without intersection, or an element without equidistant. (Here,
   // not in bottleneck.cpp: the driver asks it for every block.)
   bool anyOpen() const {
-    for (size_t i = 0; i < window_.size(); ++i)
-      if (window_[i].open_before || !window_[i].valid) return true;
-    return false;
+    return window_.any([](const Piece& p) { return p.open_before || !p.valid; });
   }
   // Intersects `next` with earlier elements of the window; `needed`: anyOpen() (CDOF searches
   // only then, CDON always).

@@ -4,7 +4,9 @@ stderr is a terminal, a run longer than a second shows `ncoffset: FILE:LINE: B M
 blocks/s), N M segments[, P % of the file], T s` rewritten in place (\\r, erase to end of line;
 the percentage in a file larger than 4 MiB) and erases it before an alarm line and at the end;
 where stderr is not a terminal, or with -q, nothing but the alarm is written."""
-import os, pty, subprocess, sys, tempfile
+import os, subprocess, sys, tempfile
+
+import terminal_stderr
 
 binary = os.path.abspath(sys.argv[1])
 # Passes of the loop: enough for a run of several seconds (the line shows after one); the
@@ -34,22 +36,8 @@ LIMIT = ["--max-blocks", "1000000000"]
 
 
 def run_with_terminal_stderr(*args, program="LONG.MPF"):
-    master, slave = pty.openpty()
-    p = subprocess.Popen([binary, *LIMIT, *args, "-o", os.devnull, program], cwd=d, stderr=slave,
-                         stdout=subprocess.DEVNULL)
-    os.close(slave)
-    out = b""
-    while True:
-        try:
-            chunk = os.read(master, 65536)
-        except OSError:  # EIO: the child closed the terminal
-            break
-        if not chunk:
-            break
-        out += chunk
-    p.wait(timeout=120)
-    os.close(master)
-    return p.returncode, out
+    return terminal_stderr.run_with_terminal_stderr([binary, *LIMIT, *args, "-o", os.devnull,
+                                                     program], d)
 
 
 status, err = run_with_terminal_stderr()

@@ -5,12 +5,14 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "file_identity.hpp"
 #include "limit_option.hpp"
+#include "message_sinks.hpp"
 #include "ncoffset/channel.hpp"
 #include "ncoffset/version.hpp"
 #include "out/html_report.hpp"
@@ -24,48 +26,14 @@
 
 namespace {
 
-// Prints MSG texts to stderr, keeps the progress line, and forwards the path.
-class MessagePrinter final : public ncoffset::PathSink {
- public:
-  MessagePrinter(ncoffset::PathSink& next, const ncoffset::Channel& channel, bool quiet)
-      : next_(next), progress_(!quiet && isatty(fileno(stderr)) != 0, progressSource(channel)) {}
-  void segment(const ncoffset::Segment& s) override {
-    progress_.segment(s);
-    next_.segment(s);
-  }
-  void message(const ncoffset::SourceLoc& where, const std::string& text) override {
-    ncoffset::cli::printError(fmt::format("{}:{}: message: {}", where.file, where.line, text));
-    next_.message(where, text);
-  }
-  void warning(const ncoffset::SourceLoc& where, int number, const std::string& text) override {
-    ncoffset::cli::printError(
-        fmt::format("{}:{}: warning {}: {}", where.file, where.line, number, text));
-    next_.warning(where, number, text);
-  }
-  void programmed(const ncoffset::Segment& s) override { next_.programmed(s); }
-  bool wantsProgrammed() const override { return next_.wantsProgrammed(); }
-  bool wantsEvents() const override { return next_.wantsEvents(); }
-  void tool(const ncoffset::ToolEvent& e) override { next_.tool(e); }
-  void mFunction(const ncoffset::MFunctionEvent& e) override { next_.mFunction(e); }
-  void dwell(const ncoffset::DwellEvent& e) override { next_.dwell(e); }
-  void spindle(const ncoffset::SpindleEvent& e) override { next_.spindle(e); }
-  void feed(const ncoffset::FeedEvent& e) override { next_.feed(e); }
-  void frame(const ncoffset::FrameEvent& e) override { next_.frame(e); }
-  void axisNames(const std::vector<std::string>& n) override { next_.axisNames(n); }
-  void axes(const ncoffset::AxesEvent& e) override { next_.axes(e); }
-  void finish(const ncoffset::Alarm* alarm) override { next_.finish(alarm); }
-
- private:
-  static ncoffset::cli::ProgressSource progressSource(const ncoffset::Channel& channel) {
-    ncoffset::cli::ProgressSource p;
-    p.file_name = [&channel](int i) -> const std::string& { return channel.fileName(i); };
-    p.file_text = [&channel](int i) { return channel.fileText(i); };
-    p.blocks = [&channel] { return channel.blocksExecuted(); };
-    return p;
-  }
-  ncoffset::PathSink& next_;
-  ncoffset::cli::ProgressLine progress_;
-};
+// What the progress line reads from the channel besides the segments.
+ncoffset::cli::ProgressSource progressSource(const ncoffset::Channel& channel) {
+  ncoffset::cli::ProgressSource p;
+  p.file_name = [&channel](int i) -> const std::string& { return channel.fileName(i); };
+  p.file_text = [&channel](int i) { return channel.fileText(i); };
+  p.blocks = [&channel] { return channel.blocksExecuted(); };
+  return p;
+}
 
 std::string extensionFormat(const std::string& path) {
   auto dot = path.rfind('.');
@@ -106,35 +74,42 @@ ncoffset::out::ReportContext reportContext(const ncoffset::Channel& channel) {
   return c;
 }
 
+// The writer of --format, printing MSG texts and warnings on stderr (message_sinks.hpp).
 std::unique_ptr<ncoffset::PathSink> makeWriter(const Args& a, std::FILE* out,
                                                const ncoffset::Channel& channel) {
+  using ncoffset::cli::Printing;
   auto names = [&channel](int i) -> const std::string& { return channel.fileName(i); };
   const int d = a.decimals;
-  if (a.format == "jsonl") return std::make_unique<ncoffset::out::JsonLinesWriter>(out, names, d);
+  if (a.format == "jsonl")
+    return std::make_unique<Printing<ncoffset::out::JsonLinesWriter>>(out, names, d);
   // Without --start the machine position at the start is assumed: drawings and statistics leave
   // out the move from it (docs/output-formats.md "Start position").
   const bool assumed = a.start.empty();
   if (a.format == "svg") {
-    auto w = std::make_unique<ncoffset::out::SvgWriter>(out, ncoffset::out::viewFromName(a.view),
-                                                        true, d);
+    auto w = std::make_unique<Printing<ncoffset::out::SvgWriter>>(
+        out, ncoffset::out::viewFromName(a.view), true, d);
     if (assumed) w->leaveOutFirstMove();
     return w;
   }
   if (a.format == "html") {
-    auto w = std::make_unique<ncoffset::out::HtmlReport>(
+    auto w = std::make_unique<Printing<ncoffset::out::HtmlReport>>(
         out, ncoffset::out::viewFromName(a.view), a.program, a.coords, d, reportContext(channel));
     if (assumed) w->leaveOutFirstMove();
     return w;
   }
   if (a.format == "mpf")
-    return std::make_unique<ncoffset::out::MpfWriter>(out, a.coords, names, d, a.diameter);
-  if (d >= 0) return std::make_unique<ncoffset::out::RoundedCsvWriter>(out, d);
-  return std::make_unique<ncoffset::out::CsvWriter>(out);
+    return std::make_unique<Printing<ncoffset::out::MpfWriter>>(out, a.coords, names, d,
+                                                                a.diameter);
+  if (d >= 0) return std::make_unique<Printing<ncoffset::out::RoundedCsvWriter>>(out, d);
+  return std::make_unique<Printing<ncoffset::out::CsvWriter>>(out);
 }
 
 // Runs the init files and the program: exit status 0, 1 (file error) or 2 (alarm).
 int runAll(const Args& a, ncoffset::Channel& channel, ncoffset::PathSink& writer) {
-  MessagePrinter sink(writer, channel, a.quiet);
+  // The progress line only where it is shown: otherwise each segment goes straight to the writer.
+  std::optional<ncoffset::cli::ProgressForwarder> progress;
+  if (!a.quiet && isatty(fileno(stderr)) != 0) progress.emplace(writer, progressSource(channel));
+  ncoffset::PathSink& sink = progress ? static_cast<ncoffset::PathSink&>(*progress) : writer;
   auto report = [&](const ncoffset::RunResult& r) -> int {
     if (r.status == ncoffset::RunResult::Status::FileError) {
       writer.finish(nullptr);
