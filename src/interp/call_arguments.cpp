@@ -99,19 +99,21 @@ std::string_view cycleName(std::string_view source_name) {
 
 void Interpreter::bindParameters(CallFrame& f) {
   const auto& params = f.signature->params;
-  if (f.args.size() > params.size() && flow_.level().program->builtin)
-    // A newer software version of a standard cycle takes more parameters (Operate's CYCLE801
-    // with its shear angles, say); their order and meaning are not known here (docs/cycles.md).
-    raise(AlarmNumber::NotModelled,
-          fmt::format("{} arguments for the standard cycle {}, which ncoffset models with {} "
-                      "parameters (PG Cycles 11.02): the newer form of the cycle is not modelled; "
-                      "a cycle of that name on the search path is run instead of the built-in one",
-                      f.args.size(), cycleName(flow_.level().program->source->name()),
-                      params.size()));
-  if (f.args.size() > params.size())
+  if (f.args.size() > params.size()) {
+    if (flow_.level().program->builtin)
+      // A newer software version of a standard cycle takes more parameters (Operate's CYCLE801
+      // with its shear angles, say); their order and meaning are not known here (docs/cycles.md).
+      raise(AlarmNumber::NotModelled,
+            fmt::format("{} arguments for the standard cycle {}, which ncoffset models with {} "
+                        "parameters (PG Cycles 11.02): the newer form of the cycle is not "
+                        "modelled; a cycle of that name on the search path is run instead of the "
+                        "built-in one",
+                        f.args.size(), cycleName(flow_.level().program->source->name()),
+                        params.size()));
     raise(AlarmNumber::TooManyParams,
           fmt::format("number of parameters too high: {} arguments for {} formal parameters",
                       f.args.size(), params.size()));
+  }
   static const CallArg kOmitted;
   for (size_t i = 0; i < params.size(); ++i)
     bindParameter(params[i], i < f.args.size() ? f.args[i] : kOmitted, i + 1, f);

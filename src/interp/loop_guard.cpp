@@ -62,10 +62,6 @@ void Interpreter::backEdge(size_t from) {
                       lvl.pos.line, line_));
 }
 
-}  // namespace ncoffset::interp
-
-namespace ncoffset::interp {
-
 // --max-blocks (docs/limits.md "Endless loops"). The automatic limit grows with the program text
 // loaded, which a subprogram call or a fed stream may have enlarged since the budget was set: it
 // is computed again here, and only a run beyond it is an alarm.
@@ -75,7 +71,8 @@ void Interpreter::blockBudgetReached() {
     raise(AlarmNumber::BlockLimit,
           fmt::format("limit of {} executed blocks reached (endless loop?); raise --max-blocks",
                       l.max_blocks));
-  const long long budget = l.max_blocks_auto_base + 2 * static_cast<long long>(flow_.loadedBytes());
+  const size_t bytes = flow_.loadedBytes();
+  const long long budget = l.max_blocks_auto_base + 2 * static_cast<long long>(bytes);
   if (executed_ - run_start_ <= budget) {
     block_budget_ = run_start_ + budget;
     return;
@@ -83,7 +80,7 @@ void Interpreter::blockBudgetReached() {
   raise(AlarmNumber::BlockLimit,
         fmt::format("limit of {} executed blocks reached ({} and 2 per byte of the {} bytes of "
                     "program text loaded; endless loop?); raise --max-blocks",
-                    budget, l.max_blocks_auto_base, flow_.loadedBytes()));
+                    budget, l.max_blocks_auto_base, bytes));
 }
 
 }  // namespace ncoffset::interp

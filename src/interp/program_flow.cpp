@@ -317,10 +317,6 @@ bool ProgramFlow::jumpToLabel(const std::string& label, size_t here, JumpSearch 
   return false;
 }
 
-}  // namespace ncoffset::interp
-
-namespace ncoffset::interp {
-
 size_t ProgramFlow::loadedBytes() const {
   size_t bytes = 0;
   const lang::SourceFile* last = nullptr;  // an archive's programs follow each other
