@@ -300,7 +300,7 @@ NCOFFSET_INLINE_STEP void MotionBuilder::checkRange(bool plain) const {
   // The end point, and a circle's centre (a line has none). One test for the usual case; the
   // alarm names the first axis beyond (rangeAlarm).
   const bool circle = m.motion == Motion::G2 || m.motion == Motion::G3;
-  if (outOfRange(toBcs(plain, m.end) + applied_offset_) |
+  if (outOfRange(toBcs(plain, m.end) + applied_offset_) ||
       (circle && outOfRange(toBcs(plain, m.centre)))) [[unlikely]]
     rangeAlarm(plain);
 }
