@@ -102,8 +102,11 @@ inline char* writeFixed(char* out, double v) {
   return out - kTrailingZeros.of[lo];
 }
 
-// Every other double, as {fmt}'s "{}" writes it (out of line: the float-to-decimal conversion).
+// Every other double, as {fmt}'s "{}" writes it (out of line: the float-to-decimal conversion):
+// {fmt}'s shortest decimal (Dragonbox) laid out here, infinities and NaN by {fmt} itself.
 char* writeShortestSlow(char* out, double v);
+// The same by {fmt}'s "{}" itself: writeShortestSlow's twin (tests).
+char* writeShortestFmt(char* out, double v);
 
 // Writes v at `out` (room for 32 characters) and returns the end; the usual numbers inline,
 // without a call.

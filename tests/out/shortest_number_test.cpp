@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <string>
@@ -98,6 +99,50 @@ TEST(ShortestNumber, EveryMicroFractionAsFmt) {
     ASSERT_EQ(viaInline(v), viaFmt(v)) << v;
     ASSERT_EQ(viaInline(-v), viaFmt(-v)) << -v;
   }
+}
+
+std::string viaSlow(double v) {
+  char text[32];
+  return std::string(text, writeShortestSlow(text, v));
+}
+
+std::string viaFmtTwin(double v) {
+  char text[32];
+  return std::string(text, writeShortestFmt(text, v));
+}
+
+// writeShortestSlow (Dragonbox's decimal laid out by ncoffset) against its twin, {fmt}'s "{}":
+// every exponent and both notations (random bit patterns), the coordinates' range, sums of
+// short decimals (2.7889999999999997), the neighbours of short decimals, and the limits.
+TEST(ShortestNumber, SlowPathAsFmtForMillionsOfValues) {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> coord(-1e4, 1e4);
+  std::uniform_int_distribution<long long> milli(-100000000, 100000000);
+  for (int i = 0; i < 1000000; ++i) {
+    double bits;
+    const unsigned long long r = rng();
+    std::memcpy(&bits, &r, sizeof bits);
+    ASSERT_EQ(viaSlow(bits), viaFmtTwin(bits)) << r;
+    const double c = coord(rng);
+    ASSERT_EQ(viaSlow(c), viaFmtTwin(c)) << c;
+    const double sum =
+        static_cast<double>(milli(rng)) / 1000 + static_cast<double>(milli(rng)) / 8000;
+    ASSERT_EQ(viaSlow(sum), viaFmtTwin(sum)) << sum;
+    const double next = std::nextafter(static_cast<double>(milli(rng)) / 1000, 1e300);
+    ASSERT_EQ(viaSlow(next), viaFmtTwin(next)) << next;
+  }
+  for (int e = -330; e <= 310; ++e)
+    for (double m : {1.0, 1.5, 9.999999999999999, 2.7889999999999997, -3.0, 5.0}) {
+      const double v = m * std::pow(10.0, e);
+      ASSERT_EQ(viaSlow(v), viaFmtTwin(v)) << v;
+      ASSERT_EQ(viaSlow(std::nextafter(v, 0.0)), viaFmtTwin(std::nextafter(v, 0.0))) << v;
+    }
+  for (double v : {0.0, -0.0, 5e-324, -5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+                   1e-5, 9.999e-5, 1e-4, 1e15, 1e16, 9999999999999998.0, 1e100, 1e-100, 0.1 + 0.2,
+                   std::numeric_limits<double>::infinity(),
+                   -std::numeric_limits<double>::infinity(), std::nan("")})
+    EXPECT_EQ(viaSlow(v), viaFmtTwin(v)) << v;
+  EXPECT_EQ(viaFmtTwin(-0.0), "0");
 }
 
 TEST(ShortestNumber, UnsignedAsToString) {
