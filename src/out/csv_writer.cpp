@@ -2,6 +2,7 @@
 // is the hot path of `ncoffset PROGRAM`, and GCC inlines writeShortest and writeUnsigned into
 // it only while little else here calls them (keep it so: docs/performance.md).
 #include <charconv>
+#include <cstring>
 
 #include "out/shortest_number.hpp"
 #include "out/writers.hpp"
@@ -24,6 +25,22 @@ inline char* writeField(char* p, double v) {
 }
 
 }  // namespace
+
+// v as writeShortest writes it; the memo's text when v equals its value (== : -0 and 0 are
+// both "0", NaN never equals). The whole 32 bytes are copied both ways, one fixed-size move
+// instead of a loop: the row has room for them (kMaxRow) and what lies past the number is
+// overwritten by the next field or cut off.
+inline char* CsvWriter::writeMemo(char* p, double v, Memo& m) {
+  if (v == m.value) {
+    std::memcpy(p, m.text, sizeof m.text);
+    return p + m.len;
+  }
+  char* const end = writeShortest(p, v);
+  m.value = v;
+  m.len = static_cast<size_t>(end - p);
+  std::memcpy(m.text, p, sizeof m.text);
+  return end;
+}
 
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
   fmt::format_to(fmt::appender(w_.buf()), kHeader);
@@ -49,18 +66,20 @@ void CsvWriter::segment(const Segment& s) {
   // (Written out, not a loop over an initializer list: that copied the three values first.)
   p = writeField(p, s.end.x);
   p = writeField(p, s.end.y);
-  p = writeField(p, s.end.z);
+  *p++ = ',';
+  p = writeMemo(p, s.end.z, z_);  // z mostly as in the row before
   if (s.motion == Motion::G2 || s.motion == Motion::G3) {
     p = writeField(p, s.centre.x);
     p = writeField(p, s.centre.y);
-    p = writeField(p, s.centre.z);
+    *p++ = ',';
+    p = writeMemo(p, s.centre.z, z_);  // in the plane: mostly z
   } else {
     *p++ = ',';
     *p++ = ',';
     *p++ = ',';
   }
   *p++ = ',';
-  if (s.has_feed) p = writeShortest(p, s.feed);  // shortest round trip, as {fmt}'s "{}"
+  if (s.has_feed) p = writeMemo(p, s.feed, feed_);  // shortest round trip, as {fmt}'s "{}"
   if (axis_room_) [[unlikely]]
     p = writeAxes(p);
   *p++ = '\n';

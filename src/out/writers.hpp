@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <string>
 
 #include "ncoffset/path.hpp"
@@ -57,10 +58,19 @@ class CsvWriter : public PathSink {
   void axes(const AxesEvent& e) override { axes_.set(e); }
 
  private:
+  // The text last written for a column whose value seldom changes from row to row (z and the
+  // centre's z, the feed): copied while the value is the same (docs/performance.md §32).
+  struct Memo {
+    double value = std::numeric_limits<double>::quiet_NaN();  // equal to no value
+    size_t len = 0;
+    char text[32] = {};
+  };
+  static char* writeMemo(char* p, double v, Memo& m);
   char* writeAxes(char* p) const;
   BufferedWriter w_;
   AxisColumns axes_;
   size_t axis_room_ = 0;  // characters the axis fields of a row may take
+  Memo z_, feed_;
 };
 
 // Puts the additional axes' names into a CSV header still in `w`'s buffer (false: the header

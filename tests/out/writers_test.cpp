@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -125,6 +127,46 @@ TEST(CsvWriter, ManyRowsAreAllWritten) {
   ASSERT_EQ(l.size(), static_cast<size_t>(n + 1));
   EXPECT_EQ(l[1], "1,G1,1,0,0,,,,1");
   EXPECT_EQ(l[n], std::to_string(n) + ",G1," + std::to_string(n) + ",0,0,,,,1");
+}
+
+// The row as the general path writes it: every number by {fmt}'s "{}" (-0 as 0).
+std::string generalRow(const Segment& s) {
+  auto num = [](double v) { return fmt::format("{}", v + 0.0); };
+  const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
+  return fmt::format("{},{},{},{},{},{},{},{},{}\n", s.line, motionName(s.motion), num(s.end.x),
+                     num(s.end.y), num(s.end.z), arc ? num(s.centre.x) : "",
+                     arc ? num(s.centre.y) : "", arc ? num(s.centre.z) : "",
+                     s.has_feed ? num(s.feed) : "");
+}
+
+// The columns written from the memo of the row before (z, the centre's z, the feed) against the
+// general path: 300,000 random rows whose z and feed repeat, change, change sign (0 and -0)
+// and become NaN, mixed with long numbers and arcs.
+TEST(CsvWriter, RepeatedColumnsAsTheGeneralPath) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  std::mt19937_64 rng(32);
+  const double pool[] = {0.0,    -0.0, -1.0, -2.75,      5.0,          2.7889999999999997,
+                         1000.0, 1e20, 1e-7, 123456.789, std::nan(""), 600.5};
+  std::uniform_int_distribution<int> pick(0, 11), motion(0, 4), keep(0, 3);
+  std::uniform_real_distribution<double> any(-1e4, 1e4);
+  std::string expected = kHeader + "\n";
+  {
+    CsvWriter w(f.get());
+    Segment s = line(1, Motion::G1, {0, 0, 0}, 100, true);
+    for (int i = 0; i < 300000; ++i) {
+      s.line = i;
+      s.motion = static_cast<Motion>(motion(rng));  // G0..G3 and G33
+      s.end = {any(rng), pool[pick(rng)], keep(rng) ? s.end.z : pool[pick(rng)]};
+      s.centre = {pool[pick(rng)], any(rng), keep(rng) ? s.end.z : pool[pick(rng)]};
+      if (!keep(rng)) s.feed = pool[pick(rng)];
+      s.has_feed = keep(rng) != 0;
+      w.segment(s);
+      expected += generalRow(s);
+    }
+    w.finish(nullptr);
+  }
+  EXPECT_EQ(readAll(f.get()), expected);
 }
 
 // ---- JSON Lines ------------------------------------------------------------------------------
