@@ -59,6 +59,8 @@ class SwitchSink final : public PathSink {
   void finish(const Alarm* a) override { target->finish(a); }
   // Writes the events still waiting (end of a run: nothing is held back any more).
   void releaseAll() { release(-1); }
+  // For Placement::bypass: segment() is target->segment() while nothing waits.
+  const bool* waiting() const { return &waiting_; }
 
  private:
   struct Message {
@@ -123,6 +125,7 @@ struct Channel::Impl {
     sink.trc = &trc;
     sink.sar = &sar;
     sink.interp = &interp;
+    placement.bypass(&sink.target, sink.waiting());
   }
   bool diameter_output;
   DiameterSink diameter;  // between the sink switch and the output, with --diameter only

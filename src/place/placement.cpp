@@ -130,7 +130,7 @@ core::Feedback Placement::motion(const MotionBlock& m) {
   // lines) carry its settings; programmed positions were checked by the interpreter.
   if (m.trc.mode != core::TrcMode::Off) checkRange(s, m.line);
   seq_ = m.seq;
-  sink_.segment(s);
+  emit(s);
   return {};
 }
 
@@ -139,7 +139,7 @@ void Placement::element(const MotionBlock& like, const Geometry& g) {
   join(s, like, path_);
   checkRange(s, like.line);
   seq_ = like.seq;
-  sink_.segment(s);
+  emit(s);
 }
 
 void Placement::warning(const MotionBlock& m, int number, const std::string& text) {

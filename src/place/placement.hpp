@@ -23,6 +23,9 @@ class Placement final : public core::Stage {
     if (start) path_.at = programmed_.at = *start;
     path_.placed = programmed_.placed = start.has_value();
   }
+  // Not copied: target_ may point at own_sink_.
+  Placement(const Placement&) = delete;
+  Placement& operator=(const Placement&) = delete;
   // At the start of each run (the sink behind a run may change): how to name files in
   // warnings, and whether the sink draws the programmed path.
   void beginRun(std::function<const std::string&(int)> file_name) {
@@ -37,6 +40,13 @@ class Placement final : public core::Stage {
     if (wants_programmed_) programmedSegment(m);
   }
   void warning(const core::MotionBlock& m, int number, const std::string& text) override;
+  // The channel's sink switch (interp/channel_impl.hpp) passes a segment on to its target when
+  // it holds no event back: while *waiting is false, segments go to *target directly, one
+  // virtual call instead of two (docs/performance.md §32); else through the sink as before.
+  void bypass(PathSink* const* target, const bool* waiting) {
+    target_ = target;
+    waiting_ = waiting;
+  }
   // Whether the sink draws the programmed path (read at beginRun).
   bool wantsProgrammed() const { return wants_programmed_; }
   // The interpreter's motion number (MotionBlock::seq) of the segment being written.
@@ -69,7 +79,18 @@ class Placement final : public core::Stage {
   // P - S at the points of `g` on the path of S (core::TipAt).
   void addTip(Segment& s, const core::MotionBlock& m, const core::Geometry& g) const;
 
+  void emit(const Segment& s) {
+    if (!*waiting_) [[likely]]
+      (*target_)->segment(s);
+    else
+      sink_.segment(s);
+  }
+
   PathSink& sink_;
+  PathSink* own_sink_ = &sink_;  // without a bypass: the sink itself, never waiting
+  static constexpr bool kNeverWaiting = false;
+  PathSink* const* target_ = &own_sink_;
+  const bool* waiting_ = &kNeverWaiting;
   CoordSystem coords_;
   bool wants_programmed_ = false;
   long long seq_ = 0;

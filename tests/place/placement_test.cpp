@@ -231,5 +231,38 @@ TEST(Placement, ASegmentAfterAFrameAndToolChangeStartsWhereThePreviousEnded) {
   }
 }
 
+// The bypass (Placement::bypass, the channel's sink switch): while nothing waits, segments go
+// to the target directly; while something waits, through the sink. Either way the same
+// segments in the same order as without a bypass (the general path).
+TEST(Placement, BypassGivesTheSegmentsOfTheGeneralPath) {
+  Collect general, through, direct;
+  Placement plain(general, CoordSystem::MCS);
+  Placement bypassed(through, CoordSystem::MCS);
+  PathSink* target = &direct;
+  bool waiting = false;
+  bypassed.bypass(&target, &waiting);
+  std::vector<bool> went_direct;
+  for (int i = 0; i < 40; ++i) {
+    waiting = i % 3 == 1;
+    MotionBlock b = quarterArc(i % 2 ? Motion::G2 : Motion::G3);
+    b.line = i;
+    plain.motion(b);
+    bypassed.motion(b);
+    went_direct.push_back(!waiting);
+  }
+  ASSERT_EQ(general.segments.size(), 40u);
+  ASSERT_EQ(through.segments.size() + direct.segments.size(), 40u);
+  size_t d = 0, t = 0;
+  for (size_t i = 0; i < 40; ++i) {
+    const Segment& s = went_direct[i] ? direct.segments[d++] : through.segments[t++];
+    EXPECT_EQ(s.line, general.segments[i].line);
+    EXPECT_EQ(s.motion, general.segments[i].motion);
+    expectVec(s.start, general.segments[i].start.x, general.segments[i].start.y,
+              general.segments[i].start.z);
+    expectVec(s.end, general.segments[i].end.x, general.segments[i].end.y,
+              general.segments[i].end.z);
+  }
+}
+
 }  // namespace
 }  // namespace ncoffset::place
