@@ -41,6 +41,11 @@ STAGES = [
     ("reading lines (Interpreter::run, ProgramFlow)",
      [r"ncoffset::interp::Interpreter::run\(", r"ncoffset::interp::ProgramFlow::"]),
     ("parsing (parseBlock)", [r"ncoffset::lang::parseBlock\(", r"ncoffset::lang::Parser::"]),
+    # A line of X, Y, Z, G0..G3, F and CR= alone: scanned and collected in one pass, and its
+    # block end (docs/performance.md section 30).
+    ("plain line (plainLine: parsing, collecting, block end)",
+     [r"ncoffset::interp::Interpreter::plainLine\(",
+      r"ncoffset::interp::Interpreter::finishPlainLine\("]),
     ("collecting words (executeBlock, collectWord, assign)",
      [r"ncoffset::interp::Interpreter::executeBlock\("]),
     ("block end (finishBlock)", [r"ncoffset::interp::Interpreter::finishBlock\("]),

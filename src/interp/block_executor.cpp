@@ -119,8 +119,8 @@ void Interpreter::finishBlock() {
 // outside a contour definition, a carrier change and a modal call (executeBlock): every word
 // the other steps look for is absent, so the feed, the motion and the bookkeeping remain, in
 // finishBlock's order. finishBlock is its twin (tests/interp/fast_path_test.cpp).
-void Interpreter::finishPlainBlock() {
-  column_ = block_.stmts.front().column;
+void Interpreter::finishPlainBlock(int column) {
+  column_ = column;  // of the block's first word
   feed_before_ = modal_.feed;
   if (words_.f) modal_.feed = modal_.units == Units::G700 ? *words_.f * 25.4 : *words_.f;
   if (events_) blockEvents(feed_before_);

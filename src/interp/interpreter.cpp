@@ -152,9 +152,10 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     }
     if (!macros_.empty()) [[unlikely]]
       if (macros_.expand(text, expanded_, max_len)) text = expanded_;
-    lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
+    const bool plain = plainLine(text);  // X Y Z G0..G3 F CR= alone: no parse (plain_line.cpp)
+    if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
-      executeBlock();
+      plain ? finishPlainLine() : executeBlock();
       if (line_pos_.offset == section_end_) [[unlikely]]
         endSection();  // CALL .. BLOCK .. TO ..
     } catch (const std::bad_alloc&) {
@@ -169,36 +170,6 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   flow_.clear();
 }
 
-// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, F and CR=, as
-// letterWord, gCode and extendedWord collect them, without the call. False: collectWord takes the
-// word (and raises any alarm).
-NCOFFSET_INLINE_STEP bool Interpreter::plainWord(const Stmt& st) {
-  if (st.name.size() != 1) {
-    if (st.name != "CR" || words_.cr || vars_.find(st.name)) return false;
-    words_.cr = st.literal_value;  // the circle radius (extendedWord)
-    return true;
-  }
-  const char c = st.name[0];
-  if (c >= 'X' && c <= 'Z') {
-    const int i = c - 'X';
-    if (words_.axis[i]) return false;  // programmed twice: collectWord's alarm
-    words_.axis[i] = true;
-    words_.axis_value[i] = st.literal_value;
-    words_.axis_mode[i] = st.mode;
-    return true;
-  }
-  if (c == 'G' && st.literal_int && st.literal_value >= 0 && st.literal_value <= 3) {
-    modal_.motion = static_cast<Motion>(static_cast<int>(st.literal_value));  // G0 G1 G2 G3
-    words_.motion_word = true;
-    return true;
-  }
-  if (c == 'F' && st.literal_value >= 0 && st.literal_value <= 1e9) {
-    words_.f = st.literal_value;
-    return true;
-  }
-  return false;
-}
-
 void Interpreter::executeBlock() {
   const lang::Block& b = block_;
   if (b.stmts.empty() && b.decls.empty()) return;       // empty, comment or label-only line
@@ -206,21 +177,7 @@ void Interpreter::executeBlock() {
   words_plain_ = false;  // until this block is through without an alarm
   ProgramLevel& lvl = flow_.level();
   if (b.plain) [[likely]] {
-    // Only address words with a plain number (G1 X10 CR=5): no definition, jump or
-    // expression among them, so each goes straight to collectWord.
-    lvl.defs_allowed = false;
-    bool all_plain = true;
-    for (const Stmt& st : b.stmts) {
-      if (!plainWord(st)) {  // plainWord raises no alarm: only collectWord needs the column
-        column_ = st.column;
-        all_plain = false;
-        collectWord(st);
-      }
-    }
-    // Block end writes to words_ only in a contour definition, a carrier change or MCALL.
-    all_plain = all_plain && !contour_active_ && !carrier_.pending && !mcall_.active;
-    all_plain ? finishPlainBlock() : finishBlock();
-    words_plain_ = all_plain;
+    executePlainBlock(b);  // plain_line.cpp
     return;
   }
   bool jumped = false;

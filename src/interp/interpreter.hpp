@@ -146,7 +146,13 @@ class Interpreter final : public lang::Environment {
 
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
-  bool plainWord(const lang::Stmt& st);  // X, Y, Z, G0..G3, F, CR= of a plain block, inline
+  // X, Y, Z, G0..G3, F, CR= of a plain block, inline; the plain block and the plain line
+  // (plain_line.cpp, docs/performance.md sections 25, 27, 30).
+  bool plainWord(std::string_view name, double value, bool is_int, Motion& motion);
+  void executePlainBlock(const lang::Block& b);
+  bool plainLine(std::string_view text);  // true: the line's words are collected
+  bool scanPlainLine(std::string_view text);
+  void finishPlainLine();
   double wordValue(const lang::Stmt& st);
   void letterWord(const lang::Stmt& st);
   void programWord(char c, const lang::Stmt& st);
@@ -161,8 +167,8 @@ class Interpreter final : public lang::Environment {
   void gNotModelled(int g);
   void setSar(core::SarKind kind);
   void finishBlock();
-  void finishPlainBlock();  // finishBlock for the words of plainWord alone (block_executor.cpp)
-  bool blockFrames();       // the frame words of the block; true when they took its axis values
+  void finishPlainBlock(int column);  // finishBlock for plainWord's words (block_executor.cpp)
+  bool blockFrames();  // the frame words of the block; true when they took its axis values
   void doFrameCommand();
   double toMm(double v) const;
 
@@ -322,7 +328,10 @@ class Interpreter final : public lang::Environment {
   lang::Block scan_block_;  // a subprogram's first block, parsed for its PROC header
 
   lang::Block block_;
-  lang::TextPos line_pos_;  // start of the executing line
+  std::string line_copy_;                  // plainLine's copy of the line, ended by a '\0'
+  int plain_column_ = 0;                   // of the first word of the plain line
+  std::array<const char*, 32> refused_{};  // lines plainLine refused, by their text's address
+  lang::TextPos line_pos_;                 // start of the executing line
   int line_ = 0;
   int column_ = 0;              // of the executing statement (0: the line as a whole)
   std::string_view line_text_;  // the executing line (a view into its loaded file)

@@ -106,6 +106,23 @@ struct BlockWords {
     motion_word = false;
     f.reset();
   }
+  // clear() for every field but plainWord's, which keep their values: the plain line collected
+  // them after a block of other words (interp/plain_line.cpp). plainWord's axis_mode is the
+  // empty instance's.
+  void clearExceptPlain() {
+    const bool a[3] = {axis[0], axis[1], axis[2]};
+    const double v[3] = {axis_value[0], axis_value[1], axis_value[2]};
+    const std::optional<double> kept_cr = cr, kept_f = f;
+    const bool kept_motion = motion_word;
+    clear();
+    for (int i = 0; i < 3; ++i) {
+      axis[i] = a[i];
+      axis_value[i] = v[i];
+    }
+    cr = kept_cr;
+    f = kept_f;
+    motion_word = kept_motion;
+  }
 };
 // All members are plain values: a copy of one empty instance clears a block's words (cheaper
 // than constructing a new one for every block).

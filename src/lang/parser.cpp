@@ -5,10 +5,10 @@
 #include "lang/parser.hpp"
 
 #include <cstdio>
-#include <cstring>
 #include <string>
 
 #include "lang/block_parser.hpp"
+#include "lang/line_copy.hpp"
 #include "lang/line_normalize.hpp"
 #include "ncoffset/alarm.hpp"
 #include "ncoffset/channel.hpp"
@@ -107,15 +107,7 @@ void parseBlock(std::string_view text, int line, Block& out, const ParseLimits& 
   // Most blocks of CAM programs (N10 G1 X10.5 Y2 F1000) are plain upper-case words, which
   // normalising would leave as they are: the fast path tries the block as written first.
   const size_t n = text.size();
-  if (out.buffer.size() < n + 1) out.buffer.resize(n + 1);
-  char* const copy = out.buffer.data();
-  if (n >= 8 && n <= 16) {  // the usual length: two (overlapping) groups of eight, no call
-    std::memcpy(copy, text.data(), 8);
-    std::memcpy(copy + n - 8, text.data() + n - 8, 8);
-  } else {
-    std::memcpy(copy, text.data(), n);
-  }
-  copy[n] = '\0';
+  copyWritten(text, out.buffer);
   if (Parser(out, std::string_view(out.buffer.data(), n), limits).parseWritten()) return;
   out.clear();
   out.line = line;

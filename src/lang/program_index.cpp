@@ -38,6 +38,8 @@ bool isDigitChar(char c) {
 // keyword, which both begin with two letters or an underscore. Nor can an empty or comment line.
 bool mayHoldHead(std::string_view s) {
   size_t i = 0, n = s.size();
+  // The usual line first (G1 X10): an upper-case letter other than N, then a digit.
+  if (n >= 2 && s[0] >= 'A' && s[0] <= 'Z' && s[0] != 'N' && isDigitChar(s[1])) return false;
   auto spaces = [&] {
     while (i < n && (s[i] == ' ' || s[i] == '\t')) ++i;
   };
