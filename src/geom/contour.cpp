@@ -83,21 +83,30 @@ Vec2 Element::endTangent() const {
   return ccw ? leftNormal(r) : -1.0 * leftNormal(r);
 }
 
-std::optional<Element> equidistant(const Element& e, double d) {
-  Element o = e;
+bool equidistantInto(const Element& e, double d, Element& o) {
+  Vec2 p0, p1;  // (computed before `o` is written: it may be `e`)
   if (!e.arc) {
     Vec2 n = leftNormal(e.startTangent());
-    o.p0 = e.p0 + d * n;
-    o.p1 = e.p1 + d * n;
-    return o;
+    p0 = e.p0 + d * n;
+    p1 = e.p1 + d * n;
+  } else {
+    // The left side of a ccw arc is its inside. Each end keeps |d| from its own end point, so a
+    // spiral keeps its change of radius.
+    const double r0 = e.radius(), r1 = length(e.p1 - e.c);
+    const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
+    if (q0 <= tol::kPoint || q1 <= tol::kPoint) return false;  // r <= R: none
+    p0 = e.c + (q0 / r0) * (e.p0 - e.c);
+    p1 = e.c + (q1 / r1) * (e.p1 - e.c);
   }
-  // The left side of a ccw arc is its inside. Each end keeps |d| from its own end point, so a
-  // spiral keeps its change of radius.
-  const double r0 = e.radius(), r1 = length(e.p1 - e.c);
-  const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
-  if (q0 <= tol::kPoint || q1 <= tol::kPoint) return std::nullopt;  // r <= R: none
-  o.p0 = e.c + (q0 / r0) * (e.p0 - e.c);
-  o.p1 = e.c + (q1 / r1) * (e.p1 - e.c);
+  o = e;
+  o.p0 = p0;
+  o.p1 = p1;
+  return true;
+}
+
+std::optional<Element> equidistant(const Element& e, double d) {
+  Element o;
+  if (!equidistantInto(e, d, o)) return std::nullopt;
   return o;
 }
 

@@ -71,6 +71,9 @@ struct Element {
 // its change of radius: both ends lie at |d| from the element's ends); an arc whose radius
 // becomes tol::kPoint or less there (an inside arc with r <= R) has no equidistant.
 std::optional<Element> equidistant(const Element& e, double d);
+// The same into `o` (left as it was when there is none; `o` may be `e`): no optional to copy
+// (radius compensation, once a block; docs/performance.md §31).
+bool equidistantInto(const Element& e, double d, Element& o);
 
 // Intersections of the two elements taken as whole lines / circles (a spiral: the circle of the
 // radius it has at the crossing), each with the parameter of the point on either element: for lines

@@ -148,7 +148,10 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     retract.p0 = fin.compensated.p1;
   }
   flushAll();
-  emit(detail::keepTipAt(toBlock(m, retract), core::kTipStart));
+  // (keepTipAt in place: its by-value block would be one more copy of the 432 bytes.)
+  MotionBlock line = toBlock(m, retract);
+  line.tip_at = static_cast<std::uint8_t>(line.tip_at & core::kTipStart);
+  emit(line);
   state_ = State::Off;
 }
 

@@ -109,9 +109,7 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
   p.side = side();
   const double s = p.side;
   if (r0 == r1) {
-    auto eq = geom::equidistant(p.programmed, s * r0);
-    if (eq) p.compensated = *eq;
-    p.valid = eq.has_value();
+    p.valid = geom::equidistantInto(p.programmed, s * r0, p.compensated);
   } else if (!p.programmed.arc) {
     // A new value in a line: from start + R_old n to end + R_new n (details Q8).
     Vec2 n = s * geom::leftNormal(p.programmed.startTangent());

@@ -1,7 +1,8 @@
 // The fast path of nearestCrossing (filteredCrossings, docs/performance.md §31) against its
 // general twin (intersect into a vector, every fraction computed): on random lines and arcs,
 // also sharing an end point or touching (the approach and retraction lines of radius
-// compensation), both must give the same crossings bit for bit and the same nearest one.
+// compensation), both must give the same crossings bit for bit and the same nearest one. And
+// equidistantInto against equidistant.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -126,6 +127,25 @@ TEST(CrossingFastPath, SpiralsTakeTheGeneralPath) {
   const auto fast = nearestCrossing(line({0, 0}, {20, 20}), spiral, nullptr, nullptr, all, key);
   ASSERT_TRUE(general && fast);
   EXPECT_TRUE(sameCrossing(*general, *fast));
+}
+
+// equidistantInto (compensateInto writes the equidistant into the window's slot): the same
+// element as equidistant, and the slot as it was when there is none (an inside arc, r <= R).
+TEST(CrossingFastPath, EquidistantIntoAsEquidistant) {
+  Random rnd(24);
+  for (int i = 0; i < 4000; ++i) {
+    const Element e = rnd.element(nullptr);
+    const double d = rnd.range(-30, 30);
+    Element into = line({1, 2}, {3, 4});
+    const Element before = into;
+    const bool has = equidistantInto(e, d, into);
+    const auto want = equidistant(e, d);
+    ASSERT_EQ(has, want.has_value());
+    const Element& expect = want ? *want : before;
+    EXPECT_TRUE(sameBits(into.p0.a, expect.p0.a) && sameBits(into.p0.o, expect.p0.o) &&
+                sameBits(into.p1.a, expect.p1.a) && sameBits(into.p1.o, expect.p1.o) &&
+                into.arc == expect.arc);
+  }
 }
 
 }  // namespace
