@@ -187,7 +187,14 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
   next.index = ++count_;
   next.restart = next.restart || restart_next_;
   restart_next_ = false;
-  connect(window_[window_.size() - 2], next);
+  Piece& cur = window_[window_.size() - 2];
+  // A tangent junction (the common case of CAM contours) is connect's first outcome, tested here
+  // without the call; anything else goes to connect, which tests it again (§31).
+  if (cur.valid && next.valid && !next.restart &&
+      geom::length(cur.compensated.p1 - next.compensated.p0) < geom::tol::kPoint)
+    next.compensated.p0 = cur.compensated.p1;
+  else
+    connect(cur, next);
   // Bottleneck detection closes junctions, never opens one: with none open before it,
   // there is nothing for checkOpen to find.
   const bool open = anyOpen();
