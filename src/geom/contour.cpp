@@ -1,6 +1,7 @@
 #include "geom/contour.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "geom/tolerance.hpp"
 #include "ncoffset/geometry.hpp"
@@ -82,21 +83,30 @@ Vec2 Element::endTangent() const {
   return ccw ? leftNormal(r) : -1.0 * leftNormal(r);
 }
 
-std::optional<Element> equidistant(const Element& e, double d) {
-  Element o = e;
+bool equidistantInto(const Element& e, double d, Element& o) {
+  Vec2 p0, p1;  // (computed before `o` is written: it may be `e`)
   if (!e.arc) {
     Vec2 n = leftNormal(e.startTangent());
-    o.p0 = e.p0 + d * n;
-    o.p1 = e.p1 + d * n;
-    return o;
+    p0 = e.p0 + d * n;
+    p1 = e.p1 + d * n;
+  } else {
+    // The left side of a ccw arc is its inside. Each end keeps |d| from its own end point, so a
+    // spiral keeps its change of radius.
+    const double r0 = e.radius(), r1 = length(e.p1 - e.c);
+    const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
+    if (q0 <= tol::kPoint || q1 <= tol::kPoint) return false;  // r <= R: none
+    p0 = e.c + (q0 / r0) * (e.p0 - e.c);
+    p1 = e.c + (q1 / r1) * (e.p1 - e.c);
   }
-  // The left side of a ccw arc is its inside. Each end keeps |d| from its own end point, so a
-  // spiral keeps its change of radius.
-  const double r0 = e.radius(), r1 = length(e.p1 - e.c);
-  const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
-  if (q0 <= tol::kPoint || q1 <= tol::kPoint) return std::nullopt;  // r <= R: none
-  o.p0 = e.c + (q0 / r0) * (e.p0 - e.c);
-  o.p1 = e.c + (q1 / r1) * (e.p1 - e.c);
+  o = e;
+  o.p0 = p0;
+  o.p1 = p1;
+  return true;
+}
+
+std::optional<Element> equidistant(const Element& e, double d) {
+  Element o;
+  if (!equidistantInto(e, d, o)) return std::nullopt;
   return o;
 }
 
@@ -114,25 +124,23 @@ Vec2 tangentAt(const Element& e, Vec2 p) {
 }
 
 namespace {
-// The crossings of the lines and circles of e1 and e2 (an arc: its circle through p0), with the
-// parameters of q1, q2 (which may belong to other elements of the same lines / circles).
-std::vector<Crossing> intersectCircles(const Element& e1, const Element& e2, const Param& q1,
-                                       const Param& q2) {
-  std::vector<Crossing> out;
-  auto crossing = [&](Vec2 p) {
-    return Crossing{p, fractionAt(e1, q1, p), fractionAt(e2, q2, p), q1.len, q2.len};
-  };
+// The points where the lines and circles of e1 and e2 (an arc: its circle through p0) cross,
+// each passed to point(p, u) with u the fraction on e1 for two lines (else NaN: the caller
+// computes it). One generator for intersect and filteredCrossings, so that both compute every
+// point with the same arithmetic (docs/performance.md §31). q1, q2: the lines' parameters (an
+// arc's are not used here).
+template <typename Point>
+void crossingPoints(const Element& e1, const Element& e2, const Param& q1, const Param& q2,
+                    Point point) {
   if (!e1.arc && !e2.arc) {
     const Vec2 d1 = q1.d, d2 = q2.d;
     double den = cross(d1, d2);
-    if (std::fabs(den) < tol::kNumeric * q1.len * q2.len) return out;  // parallel
+    if (std::fabs(den) < tol::kNumeric * q1.len * q2.len) return;  // parallel
     double u = cross(e2.p0 - e1.p0, d2) / den;
-    Vec2 p = e1.p0 + u * d1;
-    Crossing x = crossing(p);
-    x.u1 = u;
-    out.push_back(x);
-    return out;
+    point(e1.p0 + u * d1, u);
+    return;
   }
+  constexpr double kNoFraction = std::numeric_limits<double>::quiet_NaN();
   if (e1.arc != e2.arc) {
     const Element& l = e1.arc ? e2 : e1;
     const Element& c = e1.arc ? e1 : e2;
@@ -142,30 +150,42 @@ std::vector<Crossing> intersectCircles(const Element& e1, const Element& e2, con
     double b = dot(f, d), cc = dot(f, f) - r * r;
     double disc = b * b - cc;  // r^2 - (distance of the centre from the line)^2
     // Missing the circle by no more than tol::kPoint: touching it.
-    if (disc < -2 * r * tol::kPoint) return out;
+    if (disc < -2 * r * tol::kPoint) return;
     double s = std::sqrt(std::fmax(0.0, disc));
     for (double t : {-b - s, -b + s}) {
-      out.push_back(crossing(l.p0 + t * d));
+      point(l.p0 + t * d, kNoFraction);
       if (s == 0) break;
     }
-    return out;
+    return;
   }
   // Circle-circle.
   double r1 = e1.radius(), r2 = e2.radius();
   Vec2 dc = e2.c - e1.c;
   double dist = length(dc);
-  if (dist < tol::kNumeric) return out;  // concentric
+  if (dist < tol::kNumeric) return;  // concentric
   double a = (r1 * r1 - r2 * r2 + dist * dist) / (2 * dist);
   double h2 = r1 * r1 - a * a;
   // Passing each other by no more than about tol::kPoint: touching.
-  if (h2 < -2 * tol::kPoint * r1 * r2 / (r1 + r2)) return out;
+  if (h2 < -2 * tol::kPoint * r1 * r2 / (r1 + r2)) return;
   double h = std::sqrt(std::fmax(0.0, h2));
   Vec2 m = e1.c + (a / dist) * dc;
   Vec2 perp = leftNormal((1.0 / dist) * dc);
   for (double sgn : {1.0, -1.0}) {
-    out.push_back(crossing(m + (sgn * h) * perp));
+    point(m + (sgn * h) * perp, kNoFraction);
     if (h == 0) break;
   }
+}
+
+// The crossings of the lines and circles of e1 and e2, with the parameters of q1, q2 (which may
+// belong to other elements of the same lines / circles).
+std::vector<Crossing> intersectCircles(const Element& e1, const Element& e2, const Param& q1,
+                                       const Param& q2) {
+  std::vector<Crossing> out;
+  crossingPoints(e1, e2, q1, q2, [&](Vec2 p, double u) {
+    Crossing x{p, fractionAt(e1, q1, p), fractionAt(e2, q2, p), q1.len, q2.len};
+    if (!e1.arc && !e2.arc) x.u1 = u;
+    out.push_back(x);
+  });
   return out;
 }
 
@@ -230,6 +250,50 @@ std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
     }
   }
   return out;
+}
+
+namespace {
+bool passes(FractionTest test, double u, double len) {
+  return test == nullptr || test(u, len);
+}
+
+// An arc's fraction at p, its parameters computed at the first call.
+double lazyFraction(const Element& e, Param& q, bool& known, Vec2 p) {
+  if (!known) q = paramOf(e), known = true;
+  return fractionAt(e, q, p);
+}
+}  // namespace
+
+bool filteredCrossings(const Element& e1, const Element& e2, FractionTest on1, FractionTest on2,
+                       CrossingPair& out) {
+  out.n = 0;
+  if (radiusChange(e1) != 0 || radiusChange(e2) != 0) return false;  // a spiral: intersect
+  // A line's parameters now (cheap, and the crossing of two lines needs them); an arc's (two
+  // angles and a remainder) only for the first crossing that passed the line's test.
+  Param q1 = e1.arc ? Param{} : paramOf(e1), q2 = e2.arc ? Param{} : paramOf(e2);
+  bool known1 = !e1.arc, known2 = !e2.arc;
+  crossingPoints(e1, e2, q1, q2, [&](Vec2 p, double u) {
+    double u1 = 0, u2 = 0;
+    // The lines' tests first (no angle), as intersect computes their fractions.
+    if (!e1.arc) {
+      u1 = e2.arc ? fractionAt(e1, q1, p) : u;
+      if (!passes(on1, u1, q1.len)) return;
+    }
+    if (!e2.arc) {
+      u2 = fractionAt(e2, q2, p);
+      if (!passes(on2, u2, q2.len)) return;
+    }
+    if (e1.arc) {
+      u1 = lazyFraction(e1, q1, known1, p);
+      if (!passes(on1, u1, q1.len)) return;
+    }
+    if (e2.arc) {
+      u2 = lazyFraction(e2, q2, known2, p);
+      if (!passes(on2, u2, q2.len)) return;
+    }
+    out.x[out.n++] = Crossing{p, u1, u2, q1.len, q2.len};
+  });
+  return true;
 }
 
 Element fullCircle(Vec2 c, double r) {

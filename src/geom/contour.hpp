@@ -71,6 +71,9 @@ struct Element {
 // its change of radius: both ends lie at |d| from the element's ends); an arc whose radius
 // becomes tol::kPoint or less there (an inside arc with r <= R) has no equidistant.
 std::optional<Element> equidistant(const Element& e, double d);
+// The same into `o` (left as it was when there is none; `o` may be `e`): no optional to copy
+// (radius compensation, once a block; docs/performance.md §31).
+bool equidistantInto(const Element& e, double d, Element& o);
 
 // Intersections of the two elements taken as whole lines / circles (a spiral: the circle of the
 // radius it has at the crossing), each with the parameter of the point on either element: for lines
@@ -85,16 +88,31 @@ struct Crossing {
 };
 std::vector<Crossing> intersect(const Element& e1, const Element& e2);
 
-// Of the crossings of e1 and e2 that `accept` takes, the one with the least `key` (of equal
-// keys the first found). Every "which crossing counts" rule of radius compensation is one of
-// these: nearest the start of e2 (key u2), nearest the start of e1 (u1), nearest the end of e1
-// (-u1), nearest a point (the distance to it).
-template <typename Accept, typename Key>
-std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, Accept accept,
-                                        Key key) {
+// A test of a crossing's fraction u on an element of length len (tol::onElement and the like).
+using FractionTest = bool (*)(double u, double len);
+
+// At most two crossings: what two lines or circles have.
+struct CrossingPair {
+  Crossing x[2];
+  int n = 0;
+  const Crossing* begin() const { return x; }
+  const Crossing* end() const { return x + n; }
+};
+
+// The crossings of intersect(e1, e2) whose fraction on e1 passes `on1` and on e2 passes `on2`
+// (nullptr: any), in the same order with the same values, into `out`, without a heap vector; a
+// line's test is asked before an arc's fraction (its angles) is computed. false for a spiral
+// (take intersect). The fast path of nearestCrossing (docs/performance.md §31).
+bool filteredCrossings(const Element& e1, const Element& e2, FractionTest on1, FractionTest on2,
+                       CrossingPair& out);
+
+// Of the crossings in `xs` that `accept` takes, the one with the least `key` (of equal keys the
+// first found).
+template <typename Crossings, typename Accept, typename Key>
+std::optional<Crossing> nearestOf(const Crossings& xs, Accept accept, Key key) {
   std::optional<Crossing> best;
   double best_key = 0;
-  for (const Crossing& x : intersect(e1, e2)) {
+  for (const Crossing& x : xs) {
     if (!accept(x)) continue;
     const double k = key(x);
     if (!best || k < best_key) {
@@ -103,6 +121,26 @@ std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, Ac
     }
   }
   return best;
+}
+
+// Of the crossings of e1 and e2 that `accept` takes, the one with the least `key` (of equal
+// keys the first found). Every "which crossing counts" rule of radius compensation is one of
+// these: nearest the start of e2 (key u2), nearest the start of e1 (u1), nearest the end of e1
+// (-u1), nearest a point (the distance to it).
+template <typename Accept, typename Key>
+std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, Accept accept,
+                                        Key key) {
+  return nearestOf(intersect(e1, e2), accept, key);
+}
+
+// The same, when `accept` takes only crossings that pass on1(u1, len1) and on2(u2, len2): those
+// tests filter first (filteredCrossings), the result is the same.
+template <typename Accept, typename Key>
+std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, FractionTest on1,
+                                        FractionTest on2, Accept accept, Key key) {
+  CrossingPair xs;
+  if (!filteredCrossings(e1, e2, on1, on2, xs)) return nearestCrossing(e1, e2, accept, key);
+  return nearestOf(xs, accept, key);
 }
 
 // A full circle about c (radius r) as an element: every point of it has a parameter in [0, 1]

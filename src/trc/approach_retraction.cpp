@@ -16,14 +16,31 @@ namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
-RadiusCompensation::Piece RadiusCompensation::approachLine(Piece& first) {
-  Piece approach;
+namespace {
+// The retraction's fraction tests (filteredCrossings: asked before an arc's angles).
+bool onBeforeEnd(double u, double len) {
+  return tol::onElement(u, len) && tol::beforeEnd(u, len);
+}
+bool afterStartOn(double u, double len) {
+  return tol::afterStart(u, len) && tol::onElement(u, len);
+}
+}  // namespace
+
+void RadiusCompensation::approachLine(Piece& approach, Piece& first) {
+  // Every field is set: `approach` is a reused slot of the window (its vectors keep their memory).
   approach.block = selection_;
+  approach.r0 = approach.r1 = 0;
+  approach.index = 0;
+  approach.valid = true;
+  approach.open_before = approach.restart = approach.emitted = false;
   approach.approach = true;
   approach.strategy = selection_.trc.strategy;
+  approach.transition.clear();
+  approach.waiting.clear();
   approach.side = first.side;
   approach.first_tangent = first.programmed.startTangent();
   approach.programmed = toElement(selection_);
+  approach.compensated = Element{};
   approach.compensated.p0 = approach.programmed.p0;
   approach.compensated.p1 = first.compensated.p0;
   const Vec2 p1 = first.programmed.p0;
@@ -37,8 +54,9 @@ RadiusCompensation::Piece RadiusCompensation::approachLine(Piece& first) {
     // NORM: one straight line to the normal point of the first element (details Q1); if it
     // cuts the first equidistant earlier, the intersection nearest the start of the line
     // replaces that point (G460).
+    // (The two fraction tests first: the arc's angles only for a crossing inside the line.)
     auto best = geom::nearestCrossing(
-        approach.compensated, first.compensated,
+        approach.compensated, first.compensated, tol::insideElement, tol::onElement,
         [](const geom::Crossing& x) {
           return tol::insideElement(x.u1, x.len1) && tol::onElement(x.u2, x.len2);
         },
@@ -47,7 +65,6 @@ RadiusCompensation::Piece RadiusCompensation::approachLine(Piece& first) {
   }
   approach.raw = approach.compensated;
   approach.box = geom::Box(approach.raw);
-  return approach;
 }
 
 // KONT with the start point behind the contour (details Q2): a straight line tangent to the
@@ -121,7 +138,7 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   retract.p0 = fin.compensated.p1;
   if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > tol::kPoint) {
     auto best = geom::nearestCrossing(
-        fin.compensated, retract,
+        fin.compensated, retract, onBeforeEnd, afterStartOn,
         [](const geom::Crossing& x) {
           return tol::onElement(x.u1, x.len1) && tol::beforeEnd(x.u1, x.len1) &&
                  tol::afterStart(x.u2, x.len2) && tol::onElement(x.u2, x.len2);
@@ -131,7 +148,10 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     retract.p0 = fin.compensated.p1;
   }
   flushAll();
-  emit(detail::keepTipAt(toBlock(m, retract), core::kTipStart));
+  // (keepTipAt in place: its by-value block would be one more copy of the 432 bytes.)
+  MotionBlock line = toBlock(m, retract);
+  line.tip_at = static_cast<std::uint8_t>(line.tip_at & core::kTipStart);
+  emit(line);
   state_ = State::Off;
 }
 

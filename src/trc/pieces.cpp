@@ -15,7 +15,10 @@ namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
-Element RadiusCompensation::toElement(const MotionBlock& m) const {
+namespace {
+// The block's plane element in program coordinates (toElement without the metric; inlined into
+// compensateInto, which writes it straight into the slot, §31).
+NCOFFSET_INLINE_STEP Element planeElement(const MotionBlock& m) {
   PlaneAxes pa = planeAxes(m.plane);
   Element e;
   e.p0 = {m.start[pa.abscissa], m.start[pa.ordinate]};
@@ -26,6 +29,12 @@ Element RadiusCompensation::toElement(const MotionBlock& m) const {
     e.ccw = m.motion == Motion::G3;
     e.turns = m.turns;
   }
+  return e;
+}
+}  // namespace
+
+Element RadiusCompensation::toElement(const MotionBlock& m) const {
+  Element e = planeElement(m);
   if (!metric_.identity) toMetric(e);
   return e;
 }
@@ -103,15 +112,14 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
   p.transition.clear();
   p.waiting.clear();
   p.block = m;
-  p.programmed = toElement(m);
+  p.programmed = planeElement(m);
+  if (!metric_.identity) toMetric(p.programmed);
   p.r0 = r0;
   p.r1 = r1;
   p.side = side();
   const double s = p.side;
   if (r0 == r1) {
-    auto eq = geom::equidistant(p.programmed, s * r0);
-    if (eq) p.compensated = *eq;
-    p.valid = eq.has_value();
+    p.valid = geom::equidistantInto(p.programmed, s * r0, p.compensated);
   } else if (!p.programmed.arc) {
     // A new value in a line: from start + R_old n to end + R_new n (details Q8).
     Vec2 n = s * geom::leftNormal(p.programmed.startTangent());

@@ -148,17 +148,21 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
   // The first element starts at the value of the selection block; a new value programmed in it
   // (D, T) is spread over it like in any later block (details Q8).
   const double r0 = std::fabs(selection_.trc.radius), r1 = std::fabs(m.trc.radius);
-  Piece first = compensate(m, r0, std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1);
-  if (!first.valid) detail::collision(m.line, settings_.check_blocks);  // no element to approach
-  Piece approach = approachLine(first);
-  settings_ = m.trc;  // the next block starts from this one's value
-  approach.waiting = std::move(waiting_);
-  waiting_.clear();
+  // The approach line and the first element are built in the window's first two slots (it is
+  // empty while selecting), not as Pieces moved in (docs/performance.md §31).
   window_.clear();
+  window_.pushBack();
+  window_.pushBack();
+  Piece& first = window_[1];
+  compensateInto(first, m, r0, std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1);
+  if (!first.valid) detail::collision(m.line, settings_.check_blocks);  // no element to approach
+  Piece& approach = window_[0];
+  approachLine(approach, first);
+  settings_ = m.trc;                // the next block starts from this one's value
+  approach.waiting.swap(waiting_);  // (both keep their memory)
+  waiting_.clear();
   count_ = 1;
   first.index = 1;
-  window_.pushBack() = std::move(approach);
-  window_.pushBack() = std::move(first);
   dummy_blocks_ = 0;
   state_ = State::On;
 }
@@ -183,11 +187,19 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
   next.index = ++count_;
   next.restart = next.restart || restart_next_;
   restart_next_ = false;
-  connect(window_[window_.size() - 2], next);
+  Piece& cur = window_[window_.size() - 2];
+  // A tangent junction (the common case of CAM contours) is connect's first outcome, tested here
+  // without the call; anything else goes to connect, which tests it again (§31).
+  if (cur.valid && next.valid && !next.restart &&
+      geom::length(cur.compensated.p1 - next.compensated.p0) < geom::tol::kPoint)
+    next.compensated.p0 = cur.compensated.p1;
+  else
+    connect(cur, next);
   // Bottleneck detection closes junctions, never opens one: with none open before it,
   // there is nothing for checkOpen to find.
   const bool open = anyOpen();
-  bridge(next, open);
+  // (The CDOF test of bridge here: on a contour without open junctions no call.)
+  if (open || settings_.collision == CollisionCheck::Cdon) bridge(next, open);
   if (open) checkOpen(count_ + 1);
   release();
   dummy_blocks_ = 0;

@@ -183,9 +183,9 @@ class RadiusCompensation final : public core::Stage {
   [[noreturn]] static void constantAtSelection(const core::MotionBlock& m);
 
   // --- Approach and retraction (approach_retraction.cpp, W1 2.4.10, details Q1/Q2/Q7).
-  // The selection block's approach line to the first element (NORM or KONT); may move the
-  // start of `first`.
-  Piece approachLine(Piece& first);
+  // The selection block's approach line to the first element (NORM or KONT) into `approach`;
+  // may move the start of `first`.
+  void approachLine(Piece& approach, Piece& first);
   void kontApproach(Piece& approach, Piece& first);
   void retract(const core::MotionBlock& m);
   // G461/G462: the last element, meeting no earlier one, extended to find one (Q7).

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/inline_step.hpp"
 #include "geom/tolerance.hpp"
 #include "ncoffset/alarm.hpp"
 
@@ -175,7 +176,7 @@ MotionBlock curveBlock(const MotionBlock& like, const Vec3& from, const Vec3& to
 
 }  // namespace
 
-void SmoothApproach::pass(const MotionBlock& m) {
+NCOFFSET_INLINE_STEP void SmoothApproach::forward(const MotionBlock& m) {
   // hasPlaneMotion(m) without its square root (asked for every block).
   PlaneAxes pa = planeAxes(m.plane);
   if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > tol::kPoint ||
@@ -186,9 +187,13 @@ void SmoothApproach::pass(const MotionBlock& m) {
   out_.motion(m);
 }
 
+void SmoothApproach::pass(const MotionBlock& m) {
+  forward(m);
+}
+
 core::Feedback SmoothApproach::motion(const MotionBlock& m) {
   if (state_ == State::Idle && m.sar.kind == core::SarKind::None) {  // the usual block
-    pass(m);
+    forward(m);
     return {};
   }
   take(m);

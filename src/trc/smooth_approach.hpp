@@ -41,6 +41,8 @@ class SmoothApproach final : public core::Stage {
   void retraction(const core::MotionBlock& m);
   void take(const core::MotionBlock& m);
   void pass(const core::MotionBlock& m);
+  // pass() inlined into motion() for the usual block (no call per block, docs/performance.md §31).
+  void forward(const core::MotionBlock& m);
 
   core::Stage& out_;
   State state_ = State::Idle;
