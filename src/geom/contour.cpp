@@ -253,10 +253,6 @@ std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
 }
 
 namespace {
-bool passes(FractionTest test, double u, double len) {
-  return test == nullptr || test(u, len);
-}
-
 // An arc's fraction at p, its parameters computed at the first call.
 double lazyFraction(const Element& e, Param& q, bool& known, Vec2 p) {
   if (!known) q = paramOf(e), known = true;
@@ -277,19 +273,19 @@ bool filteredCrossings(const Element& e1, const Element& e2, FractionTest on1, F
     // The lines' tests first (no angle), as intersect computes their fractions.
     if (!e1.arc) {
       u1 = e2.arc ? fractionAt(e1, q1, p) : u;
-      if (!passes(on1, u1, q1.len)) return;
+      if (!passesTest(on1, u1, q1.len)) return;
     }
     if (!e2.arc) {
       u2 = fractionAt(e2, q2, p);
-      if (!passes(on2, u2, q2.len)) return;
+      if (!passesTest(on2, u2, q2.len)) return;
     }
     if (e1.arc) {
       u1 = lazyFraction(e1, q1, known1, p);
-      if (!passes(on1, u1, q1.len)) return;
+      if (!passesTest(on1, u1, q1.len)) return;
     }
     if (e2.arc) {
       u2 = lazyFraction(e2, q2, known2, p);
-      if (!passes(on2, u2, q2.len)) return;
+      if (!passesTest(on2, u2, q2.len)) return;
     }
     out.x[out.n++] = Crossing{p, u1, u2, q1.len, q2.len};
   });

@@ -90,6 +90,10 @@ std::vector<Crossing> intersect(const Element& e1, const Element& e2);
 
 // A test of a crossing's fraction u on an element of length len (tol::onElement and the like).
 using FractionTest = bool (*)(double u, double len);
+// u passes `test` (nullptr: every u passes).
+inline bool passesTest(FractionTest test, double u, double len) {
+  return test == nullptr || test(u, len);
+}
 
 // At most two crossings: what two lines or circles have.
 struct CrossingPair {
@@ -133,14 +137,20 @@ std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, Ac
   return nearestOf(intersect(e1, e2), accept, key);
 }
 
-// The same, when `accept` takes only crossings that pass on1(u1, len1) and on2(u2, len2): those
-// tests filter first (filteredCrossings), the result is the same.
-template <typename Accept, typename Key>
+// The same with the crossings accepted by their fractions alone, on1(u1, len1) and on2(u2,
+// len2) (nullptr: any): those tests filter before an arc's angles are computed
+// (filteredCrossings); a spiral takes intersect with the same tests.
+template <typename Key>
 std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, FractionTest on1,
-                                        FractionTest on2, Accept accept, Key key) {
+                                        FractionTest on2, Key key) {
   CrossingPair xs;
-  if (!filteredCrossings(e1, e2, on1, on2, xs)) return nearestCrossing(e1, e2, accept, key);
-  return nearestOf(xs, accept, key);
+  if (filteredCrossings(e1, e2, on1, on2, xs))
+    return nearestOf(
+        xs, [](const Crossing&) { return true; }, key);
+  auto accept = [on1, on2](const Crossing& x) {
+    return passesTest(on1, x.u1, x.len1) && passesTest(on2, x.u2, x.len2);
+  };
+  return nearestCrossing(e1, e2, accept, key);
 }
 
 // A full circle about c (radius r) as an element: every point of it has a parameter in [0, 1]

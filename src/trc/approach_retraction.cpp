@@ -55,12 +55,8 @@ void RadiusCompensation::approachLine(Piece& approach, Piece& first) {
     // cuts the first equidistant earlier, the intersection nearest the start of the line
     // replaces that point (G460).
     // (The two fraction tests first: the arc's angles only for a crossing inside the line.)
-    auto best = geom::nearestCrossing(
-        approach.compensated, first.compensated, tol::insideElement, tol::onElement,
-        [](const geom::Crossing& x) {
-          return tol::insideElement(x.u1, x.len1) && tol::onElement(x.u2, x.len2);
-        },
-        [](const geom::Crossing& x) { return x.u1; });
+    auto best = geom::nearestCrossing(approach.compensated, first.compensated, tol::insideElement,
+                                      tol::onElement, [](const geom::Crossing& x) { return x.u1; });
     if (best) approach.compensated.p1 = first.compensated.p0 = best->p;
   }
   approach.raw = approach.compensated;
@@ -137,20 +133,14 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   Piece& fin = window_.back();
   retract.p0 = fin.compensated.p1;
   if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > tol::kPoint) {
-    auto best = geom::nearestCrossing(
-        fin.compensated, retract, onBeforeEnd, afterStartOn,
-        [](const geom::Crossing& x) {
-          return tol::onElement(x.u1, x.len1) && tol::beforeEnd(x.u1, x.len1) &&
-                 tol::afterStart(x.u2, x.len2) && tol::onElement(x.u2, x.len2);
-        },
-        [](const geom::Crossing& x) { return -x.u1; });
+    auto best = geom::nearestCrossing(fin.compensated, retract, onBeforeEnd, afterStartOn,
+                                      [](const geom::Crossing& x) { return -x.u1; });
     if (best) fin.compensated.p1 = best->p;
     retract.p0 = fin.compensated.p1;
   }
   flushAll();
-  // (keepTipAt in place: its by-value block would be one more copy of the 432 bytes.)
   MotionBlock line = toBlock(m, retract);
-  line.tip_at = static_cast<std::uint8_t>(line.tip_at & core::kTipStart);
+  detail::keepTipAt(line, core::kTipStart);
   emit(line);
   state_ = State::Off;
 }
@@ -223,7 +213,9 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
       last.compensated.p1 = best->p;
       line.p0 = best->p;
       flushAll();
-      emit(detail::keepTipAt(toBlock(m, line), core::kTipStart));
+      MotionBlock block = toBlock(m, line);
+      detail::keepTipAt(block, core::kTipStart);
+      emit(block);
       state_ = State::Off;
       return;
     }
@@ -234,7 +226,9 @@ void RadiusCompensation::kontRetraction(const MotionBlock& m) {
              m.start[pa.applicate]);
   flushAll();
   for (const MotionBlock& b : around) emit(b);
-  emit(detail::keepTipAt(toBlock(m, line), core::kTipStart));
+  MotionBlock block = toBlock(m, line);
+  detail::keepTipAt(block, core::kTipStart);
+  emit(block);
   state_ = State::Off;
 }
 

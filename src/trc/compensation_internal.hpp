@@ -23,9 +23,9 @@ namespace tol = geom::tol;
 // Block `b` with the tip vector P - S kept only at `keep` (core::TipAt): the approach line
 // starts where P stood, the retraction line ends where P is to stand (docs/cutting-edge-
 // positions.md).
-inline core::MotionBlock keepTipAt(core::MotionBlock b, std::uint8_t keep) {
+// In place: a 432-byte block is not copied again (docs/performance.md §31).
+inline void keepTipAt(core::MotionBlock& b, std::uint8_t keep) {
   b.tip_at = static_cast<std::uint8_t>(b.tip_at & keep);
-  return b;
 }
 
 // The index of a block that never comes (for checkOpen when the window is flushed).

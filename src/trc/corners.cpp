@@ -28,6 +28,7 @@ struct RadiusCompensation::Corner {
 };
 
 void RadiusCompensation::connect(Piece& cur, Piece& next) {
+  if (joinTangent(cur, next)) return;  // tangent transition: nothing inserted
   if (!cur.valid || !next.valid) {
     next.open_before = true;
     return;
@@ -35,10 +36,6 @@ void RadiusCompensation::connect(Piece& cur, Piece& next) {
   const Vec2 a = cur.compensated.p1, b = next.compensated.p0;
   if (next.restart) {
     restartLine(next, a);
-    return;
-  }
-  if (geom::length(a - b) < tol::kPoint) {  // tangent transition: nothing inserted
-    next.compensated.p0 = a;
     return;
   }
   const Vec2 t1 = cur.programmed.endTangent(), t2 = next.programmed.startTangent();

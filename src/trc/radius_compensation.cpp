@@ -188,13 +188,7 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
   next.restart = next.restart || restart_next_;
   restart_next_ = false;
   Piece& cur = window_[window_.size() - 2];
-  // A tangent junction (the common case of CAM contours) is connect's first outcome, tested here
-  // without the call; anything else goes to connect, which tests it again (§31).
-  if (cur.valid && next.valid && !next.restart &&
-      geom::length(cur.compensated.p1 - next.compensated.p0) < geom::tol::kPoint)
-    next.compensated.p0 = cur.compensated.p1;
-  else
-    connect(cur, next);
+  if (!joinTangent(cur, next)) connect(cur, next);  // a tangent junction without the call
   // Bottleneck detection closes junctions, never opens one: with none open before it,
   // there is nothing for checkOpen to find.
   const bool open = anyOpen();
@@ -236,7 +230,9 @@ std::optional<Vec3> RadiusCompensation::preprocessorStop(bool alarm) {
     Element approach;
     approach.p0 = anchor.programmed.p0;
     approach.p1 = anchor.compensated.p1;
-    emit(detail::keepTipAt(toBlock(selection_, approach), core::kTipEnd));
+    MotionBlock line = toBlock(selection_, approach);
+    detail::keepTipAt(line, core::kTipEnd);
+    emit(line);
     for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
     stands = atPoint(waiting_.empty() ? selection_ : waiting_.back(), approach.p1).end;
     waiting_.clear();
@@ -266,7 +262,9 @@ void RadiusCompensation::flush() {
     Element approach;
     approach.p0 = only.programmed.p0;
     approach.p1 = only.compensated.p1;
-    emit(detail::keepTipAt(toBlock(selection_, approach), core::kTipEnd));
+    MotionBlock line = toBlock(selection_, approach);
+    detail::keepTipAt(line, core::kTipEnd);
+    emit(line);
     for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
   } else if (state_ == State::On) {
     flushAll();

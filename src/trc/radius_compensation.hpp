@@ -140,6 +140,16 @@ class RadiusCompensation final : public core::Stage {
   // --- Corners (corners.cpp, W1 2.4.3, 2.4.5, details Q3/Q4).
   // Joins `next` to the last element of the window (corner).
   void connect(Piece& cur, Piece& next);
+  // connect's first outcome, inline for motionOn (the common case of CAM contours, §31): both
+  // elements valid, no change of side, and the equidistants meet, so `next` starts where `cur`
+  // ends and nothing is inserted. False: connect decides.
+  static bool joinTangent(const Piece& cur, Piece& next) {
+    if (!cur.valid || !next.valid || next.restart ||
+        geom::length(cur.compensated.p1 - next.compensated.p0) >= geom::tol::kPoint)
+      return false;
+    next.compensated.p0 = cur.compensated.p1;
+    return true;
+  }
   // A change of side: the straight line from the old normal point to the new one.
   void restartLine(Piece& next, geom::Vec2 from) const;
   void insideCorner(Piece& cur, Piece& next, const Corner& k) const;
