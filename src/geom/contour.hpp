@@ -72,8 +72,28 @@ struct Element {
 // becomes tol::kPoint or less there (an inside arc with r <= R) has no equidistant.
 std::optional<Element> equidistant(const Element& e, double d);
 // The same into `o` (left as it was when there is none; `o` may be `e`): no optional to copy
-// (radius compensation, once a block; docs/performance.md §31).
-bool equidistantInto(const Element& e, double d, Element& o);
+// (radius compensation, once a block; docs/performance.md §31). Inline: compensateInto's
+// equidistant without a call and a line's tangent without a second one (§36).
+inline bool equidistantInto(const Element& e, double d, Element& o) {
+  Vec2 p0, p1;  // (computed before `o` is written: it may be `e`)
+  if (!e.arc) {
+    const Vec2 n = leftNormal(unit(e.p1 - e.p0));  // startTangent() of a line
+    p0 = e.p0 + d * n;
+    p1 = e.p1 + d * n;
+  } else {
+    // The left side of a ccw arc is its inside. Each end keeps |d| from its own end point, so a
+    // spiral keeps its change of radius.
+    const double r0 = e.radius(), r1 = length(e.p1 - e.c);
+    const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
+    if (q0 <= tol::kPoint || q1 <= tol::kPoint) return false;  // r <= R: none
+    p0 = e.c + (q0 / r0) * (e.p0 - e.c);
+    p1 = e.c + (q1 / r1) * (e.p1 - e.c);
+  }
+  o = e;
+  o.p0 = p0;
+  o.p1 = p1;
+  return true;
+}
 
 // Intersections of the two elements taken as whole lines / circles (a spiral: the circle of the
 // radius it has at the crossing), each with the parameter of the point on either element: for lines
@@ -140,9 +160,19 @@ std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, Ac
 // The same with the crossings accepted by their fractions alone, on1(u1, len1) and on2(u2,
 // len2) (nullptr: any): those tests filter before an arc's angles are computed
 // (filteredCrossings); a spiral takes intersect with the same tests.
+// Two lines, e2 starting exactly where e1 ends, whose only crossing `on1` refuses without being
+// computed: crossingPoints finds it at u1 = cross(d1, d2) / cross(d1, d2), which is 1 exactly (or
+// the lines are parallel: none). The approach line into a line and a line into the retraction
+// line, where the G460 test refuses the end of e1 (docs/performance.md §36).
+inline bool joinedLinesMiss(const Element& e1, const Element& e2, FractionTest on1) {
+  return !e1.arc && !e2.arc && e2.p0.a == e1.p1.a && e2.p0.o == e1.p1.o &&
+         !passesTest(on1, 1.0, length(e1.p1 - e1.p0));
+}
+
 template <typename Key>
 std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, FractionTest on1,
                                         FractionTest on2, Key key) {
+  if (joinedLinesMiss(e1, e2, on1)) return std::nullopt;
   CrossingPair xs;
   if (filteredCrossings(e1, e2, on1, on2, xs))
     return nearestOf(

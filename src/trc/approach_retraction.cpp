@@ -38,15 +38,18 @@ void RadiusCompensation::approachLine(Piece& approach, Piece& first) {
   approach.transition.clear();
   approach.waiting.clear();
   approach.side = first.side;
-  approach.first_tangent = first.programmed.startTangent();
+  // The first element's start tangent: asked only by G462 (bottleneck.cpp, approachExtension)
+  // and KONT, so not computed for every approach (docs/performance.md §36).
+  if (approach.strategy == TrcStrategy::G462)
+    approach.first_tangent = first.programmed.startTangent();
   approach.programmed = toElement(selection_);
   approach.compensated = Element{};
   approach.compensated.p0 = approach.programmed.p0;
   approach.compensated.p1 = first.compensated.p0;
   const Vec2 p1 = first.programmed.p0;
-  const Vec2 n1 = first.side * geom::leftNormal(first.programmed.startTangent());
   if (selection_.trc.approach == Approach::Kont &&
-      geom::dot(approach.programmed.p0 - p1, n1) < -tol::kPoint) {
+      geom::dot(approach.programmed.p0 - p1,
+                first.side * geom::leftNormal(first.programmed.startTangent())) < -tol::kPoint) {
     approach.strategy =
         TrcStrategy::G460;  // the point behind the contour: G461/G462 have no effect (Q7)
     kontApproach(approach, first);
@@ -59,8 +62,7 @@ void RadiusCompensation::approachLine(Piece& approach, Piece& first) {
                                       tol::onElement, [](const geom::Crossing& x) { return x.u1; });
     if (best) approach.compensated.p1 = first.compensated.p0 = best->p;
   }
-  approach.raw = approach.compensated;
-  approach.box = geom::Box(approach.raw);
+  keepRaw(approach);
 }
 
 // KONT with the start point behind the contour (details Q2): a straight line tangent to the
@@ -117,11 +119,11 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   Piece& last = window_.back();
   if (!last.valid) detail::collision(last.block.line, settings_.check_blocks);
-  const Vec2 pe = last.programmed.p1;
-  const Vec2 ne = last.side * geom::leftNormal(last.programmed.endTangent());
   Element retract = toElement(m);
+  // (The normal at the end only for KONT.)
   if (m.trc.approach == Approach::Kont && !last.emitted &&
-      geom::dot(retract.p1 - pe, ne) < -tol::kPoint) {
+      geom::dot(retract.p1 - last.programmed.p1,
+                last.side * geom::leftNormal(last.programmed.endTangent())) < -tol::kPoint) {
     kontRetraction(m);
     return;
   }
@@ -154,8 +156,8 @@ void RadiusCompensation::retractionExtension(const MotionBlock& m) {
   if (m.trc.strategy == TrcStrategy::G461) {
     ext = geom::fullCircle(last.programmed.p1, std::fabs(last.r1));
   } else {
-    ext.p0 = last.raw.p1;
-    ext.p1 = last.raw.p1 + last.programmed.endTangent();
+    ext.p0 = last.raw_end;
+    ext.p1 = last.raw_end + last.programmed.endTangent();
   }
   const long oldest = count_ + 1 - settings_.check_blocks;
   std::optional<std::pair<size_t, Vec2>> found;

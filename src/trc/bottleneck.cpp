@@ -27,7 +27,7 @@ void RadiusCompensation::bridge(Piece& next, bool needed) {
   Element changed;
   if (next.r0 != next.r1) changed = cornerEquidistant(next, false);
   const Element& later = next.r0 == next.r1 ? next.compensated : changed;
-  const geom::Box later_box = next.r0 == next.r1 ? next.box : geom::Box(later);
+  const geom::Box later_box = next.r0 == next.r1 ? next.box() : geom::Box(later);
   std::optional<std::pair<size_t, Vec2>> found;
   size_t start = window_.size() - 2;
   if (!window_[start].valid) {
@@ -43,14 +43,15 @@ void RadiusCompensation::bridge(Piece& next, bool needed) {
     }
   }
   for (size_t j = start; j-- > 0;) {
-    const Piece& c = window_[j];
+    Piece& c = window_[j];  // (not const: its box is computed at the first use)
     if (c.index < oldest || c.emitted) break;
     if (!c.valid || (c.approach && !needed)) continue;
     // The element itself, then for an approach line with G461 a circle of the tool radius about
     // the end point of the uncompensated approach block, with G462 the line's extension; both
     // only to find an intersection (W1 2.4.10, details Q7).
     std::optional<geom::Crossing> best;
-    if (c.box.overlaps(later_box)) best = bridgeCrossing(c, c.compensated, false, later, next.side);
+    if (c.box().overlaps(later_box))
+      best = bridgeCrossing(c, c.compensated, false, later, next.side);
     if (!best && c.approach && (c.strategy == TrcStrategy::G461 || c.strategy == TrcStrategy::G462))
       best = bridgeCrossing(c, approachExtension(c, std::fabs(next.r0)), true, later, next.side);
     if (!best) continue;

@@ -40,7 +40,7 @@ bool RadiusCompensation::keepConstant(const MotionBlock& m) {
   }
   if (!constant_) beginConstant();
   emitShifted(m);
-  settings_ = m.trc;  // a new D takes effect whole in the block that ends the suppression
+  setSettings(m.trc);  // a new D takes effect whole in the block that ends the suppression
   dummy_blocks_ = 0;
   return true;
 }
@@ -57,6 +57,7 @@ void RadiusCompensation::beginConstant() {
 
 void RadiusCompensation::emitShifted(const MotionBlock& m) {
   window_.clear();
+  maybe_open_ = true;
   Piece& p = window_.pushBack();
   p.index = ++count_;
   p.valid = true;
@@ -72,8 +73,7 @@ void RadiusCompensation::emitShifted(const MotionBlock& m) {
   p.compensated.p0 = p.programmed.p0 + constant_offset_;
   p.compensated.p1 = p.programmed.p1 + constant_offset_;
   p.compensated.c = p.programmed.c + constant_offset_;  // a circle keeps its radius
-  p.raw = p.compensated;
-  p.box = geom::Box(p.raw);
+  keepRaw(p);
   p.emitted = false;
   emitPiece(p);
   p.emitted = true;  // kept only for the next block to start from (and a G40 line)

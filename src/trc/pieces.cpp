@@ -102,8 +102,8 @@ RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, d
   return p;
 }
 
-void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0,
-                                        double r1) const {
+NCOFFSET_INLINE_STEP void RadiusCompensation::startPiece(Piece& p, const MotionBlock& m, double r0,
+                                                         double r1) const {
   // Every field is set: `p` may be a reused slot of the window (its vectors keep their memory).
   p.index = 0;
   p.valid = true;
@@ -112,11 +112,60 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
   p.transition.clear();
   p.waiting.clear();
   p.block = m;
-  p.programmed = planeElement(m);
-  if (!metric_.identity) toMetric(p.programmed);
   p.r0 = r0;
   p.r1 = r1;
   p.side = side();
+}
+
+NCOFFSET_INLINE_STEP void RadiusCompensation::compensateConstant(Piece& p, const MotionBlock& m,
+                                                                 double r) const {
+  // planeElement and equidistantInto with the same arithmetic, from values in registers: each
+  // field of the slot written once (the general path writes the element, reads it back and
+  // copies it whole into the equidistant).
+  const PlaneAxes pa = planeAxes(m.plane);
+  const Vec2 a{m.start[pa.abscissa], m.start[pa.ordinate]};
+  const Vec2 b{m.end[pa.abscissa], m.end[pa.ordinate]};
+  const double d = p.side * r;
+  Element& e = p.programmed;
+  Element& o = p.compensated;
+  e.p0 = a;
+  e.p1 = b;
+  if (m.motion != Motion::G2 && m.motion != Motion::G3) {
+    e.arc = e.ccw = false;
+    e.c = {};
+    e.turns = 0;
+    const Vec2 n = geom::leftNormal(geom::unit(b - a));
+    o = e;
+    o.p0 = a + d * n;
+    o.p1 = b + d * n;
+    return;
+  }
+  const Vec2 c{m.centre[pa.abscissa], m.centre[pa.ordinate]};
+  e.arc = true;
+  e.c = c;
+  e.ccw = m.motion == Motion::G3;
+  e.turns = m.turns;
+  const double r0 = geom::length(a - c), r1 = geom::length(b - c);
+  const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
+  if (q0 <= tol::kPoint || q1 <= tol::kPoint) {  // r <= R: none (the slot's element stays)
+    p.valid = false;
+    return;
+  }
+  o = e;
+  o.p0 = c + (q0 / r0) * (a - c);
+  o.p1 = c + (q1 / r1) * (b - c);
+}
+
+void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0,
+                                        double r1) const {
+  startPiece(p, m, r0, r1);
+  if (r0 == r1 && metric_.identity && !general_paths_) {  // the usual element (§36)
+    compensateConstant(p, m, r0);
+    keepRaw(p);
+    return;
+  }
+  p.programmed = planeElement(m);
+  if (!metric_.identity) toMetric(p.programmed);
   const double s = p.side;
   if (r0 == r1) {
     p.valid = geom::equidistantInto(p.programmed, s * r0, p.compensated);
@@ -139,12 +188,7 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
     p.compensated.p0 = e.c + (ra / r) * (e.p0 - e.c);
     p.compensated.p1 = e.c + (rb / geom::length(e.p1 - e.c)) * (e.p1 - e.c);
   }
-  p.raw = p.compensated;
-  p.box = geom::Box(p.raw);  // the trimmed element always stays inside
-  if (r0 != r1) {            // a varying value (spiral, inclined line): widen by the change
-    const double d = std::fabs(r1 - r0);
-    p.box.lo_a -= d, p.box.lo_o -= d, p.box.hi_a += d, p.box.hi_o += d;
-  }
+  keepRaw(p);
 }
 
 Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const {
@@ -152,21 +196,6 @@ Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const
   double r = at_end ? p.r1 : p.r0;
   auto e = geom::equidistant(p.programmed, p.side * r);
   return e ? *e : p.compensated;
-}
-
-void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
-  const double old_side = side(), old_r = std::fabs(settings_.radius);
-  const double new_r = std::fabs(m.trc.radius);
-  settings_ = m.trc;
-  if (sideOf(m.trc) != old_side) {
-    // G41 <-> G42 (or the sign of the value) while active: the last element ends on its normal,
-    // the new side starts on the normal at this block's start (PM-NC "change of compensation
-    // direction"; details Q8 for the sign).
-    compensateInto(p, m, new_r, new_r);
-    p.restart = true;
-    return;
-  }
-  compensateInto(p, m, old_r, std::fabs(old_r - new_r) <= tol::kPoint ? old_r : new_r);
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) {

@@ -92,22 +92,18 @@ void RadiusCompensation::blockWithoutMotion() {
 core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
   if (pass_programmed_) [[unlikely]]
     out_.programmed(m);
-  switch (state_) {
-    case State::Off: {
-      // (Here, not in startSelection: the path of every block without compensation.)
-      const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > geom::tol::kPoint;
-      if (!wants || !planeMotion(m))
-        emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
-      else
-        startSelection(m);
-      break;
-    }
-    case State::Selecting:
-      motionSelecting(m);
-      break;
-    case State::On:
-      motionOn(m);
-      break;
+  // (On first: the state of most blocks of a compensated contour, one test before the call.)
+  if (state_ == State::On) {
+    motionOn(m);
+  } else if (state_ == State::Off) {
+    // (Here, not in startSelection: the path of every block without compensation.)
+    const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > geom::tol::kPoint;
+    if (!wants || !planeMotion(m))
+      emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
+    else
+      startSelection(m);
+  } else {
+    motionSelecting(m);
   }
   return {};
 }
@@ -120,7 +116,7 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
   if (m.trc.approach == Approach::KontC || m.trc.approach == Approach::KontT)
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   constant_ = false;  // (a G40 while CUTCONON was active left it set)
-  settings_ = m.trc;
+  setSettings(m.trc);
   selection_ = m;
   metric_ = planeMetric(m, projected_);
   rare_ = projected_;
@@ -144,7 +140,7 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
     blockWithoutMotion();
     return;
   }
-  if (sideOf(m.trc) != side()) settings_ = m.trc;  // the side of the first element counts
+  if (sideOf(m.trc) != side()) setSettings(m.trc);  // the side of the first element counts
   // The first element starts at the value of the selection block; a new value programmed in it
   // (D, T) is spread over it like in any later block (details Q8).
   const double r0 = std::fabs(selection_.trc.radius), r1 = std::fabs(m.trc.radius);
@@ -158,13 +154,30 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
   if (!first.valid) detail::collision(m.line, settings_.check_blocks);  // no element to approach
   Piece& approach = window_[0];
   approachLine(approach, first);
-  settings_ = m.trc;                // the next block starts from this one's value
+  setSettings(m.trc);               // the next block starts from this one's value
   approach.waiting.swap(waiting_);  // (both keep their memory)
   waiting_.clear();
   count_ = 1;
   first.index = 1;
+  maybe_open_ = general_paths_;  // both valid, neither open
   dummy_blocks_ = 0;
   state_ = State::On;
+}
+
+// (Here, inlined into motionOn, its one caller: once a block, docs/performance.md §36.)
+NCOFFSET_INLINE_STEP void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
+  const double old_side = side(), old_r = std::fabs(settings_.radius);
+  const double new_r = std::fabs(m.trc.radius);
+  setSettings(m.trc);
+  if (side_ != old_side) {
+    // G41 <-> G42 (or the sign of the value) while active: the last element ends on its normal,
+    // the new side starts on the normal at this block's start (PM-NC "change of compensation
+    // direction"; details Q8 for the sign).
+    compensateInto(p, m, new_r, new_r);
+    p.restart = true;
+    return;
+  }
+  compensateInto(p, m, old_r, std::fabs(old_r - new_r) <= geom::tol::kPoint ? old_r : new_r);
 }
 
 void RadiusCompensation::motionOn(const MotionBlock& m) {
@@ -191,10 +204,11 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
   if (!joinTangent(cur, next)) connect(cur, next);  // a tangent junction without the call
   // Bottleneck detection closes junctions, never opens one: with none open before it,
   // there is nothing for checkOpen to find.
-  const bool open = anyOpen();
+  const bool open = openWith(next);
   // (The CDOF test of bridge here: on a contour without open junctions no call.)
   if (open || settings_.collision == CollisionCheck::Cdon) bridge(next, open);
   if (open) checkOpen(count_ + 1);
+  maybe_open_ = open || general_paths_;
   release();
   dummy_blocks_ = 0;
 }
@@ -208,7 +222,8 @@ void RadiusCompensation::release() {
 }
 
 void RadiusCompensation::flushAll() {
-  checkOpen(detail::kNoLaterBlock);  // no later block: every open junction stays open
+  // No later block: every open junction stays open. (With none open, checkOpen finds none.)
+  if (maybe_open_) checkOpen(detail::kNoLaterBlock);
   for (size_t i = 0; i < window_.size(); ++i)
     if (!window_[i].emitted) emitPiece(window_[i]);
   window_.clear();
@@ -250,6 +265,7 @@ std::optional<Vec3> RadiusCompensation::preprocessorStop(bool alarm) {
   anchor.transition.clear();
   window_.clear();
   window_.pushBack() = std::move(anchor);
+  maybe_open_ = true;
   restart_next_ = true;
   return stands;
 }

@@ -16,6 +16,7 @@
 // bottleneck.cpp and approach_retraction.cpp; compensation_internal.hpp holds what they share.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -52,6 +53,9 @@ class RadiusCompensation final : public core::Stage {
   // STOP_CUTCOM_STOPRE = 1 alarm 10778 instead.
   std::optional<Vec3> preprocessorStop(bool alarm) override;
   bool active() const { return state_ != State::Off; }
+  // Tests only (tests/trc/compensation_fast_path_test.cpp): true makes every block take the
+  // general paths, the twins of the fast ones, so that a test compares the two outputs.
+  static void useGeneralPaths(bool on) { general_paths_ = on; }
 
  private:
   enum class State { Off, Selecting, On };
@@ -62,21 +66,50 @@ class RadiusCompensation final : public core::Stage {
     core::MotionBlock block;
     geom::Element programmed;
     geom::Element compensated;  // start and end as far as they are known
-    geom::Element raw;          // the whole equidistant (before corners trimmed it)
-    geom::Box box;              // around `raw` (so around every trimmed part of it)
-    double r0 = 0, r1 = 0;      // compensation value at the start and the end (D change, Q8)
-    double side = 1;            // +1: tool left of the travel, -1: right
-    long index = 0;             // traversing blocks since the selection (approach = 0)
-    bool valid = true;          // has an equidistant (an inside arc smaller than R has none)
-    bool open_before = false;   // no intersection with the previous element (yet)
-    bool approach = false;      // the selection block's approach line
-    bool restart = false;       // starts anew: side change (G41 <-> G42, sign of R), STOPRE
-    bool emitted = false;       // already written (kept only to join the next element to)
+    // The ends of the whole equidistant (before corners trimmed it; the G462 retraction's
+    // extension starts at raw_end). Only the ends: the whole element was copied once a block.
+    geom::Vec2 raw_start, raw_end;
+    // Around the whole equidistant (so around every trimmed part of it), widened by a change of
+    // value: computed at the first call (bottleneck detection: CDON, or an open junction), not
+    // for every element (docs/performance.md §36).
+    const geom::Box& box() {
+      if (!box_known) setBox();
+      return box_;
+    }
+    void setBox() {
+      geom::Element raw = compensated;
+      raw.p0 = raw_start;
+      raw.p1 = raw_end;
+      box_ = geom::Box(raw);
+      if (r0 != r1) {  // a varying value (spiral, inclined line): widen by the change
+        const double d = std::fabs(r1 - r0);
+        box_.lo_a -= d, box_.lo_o -= d, box_.hi_a += d, box_.hi_o += d;
+      }
+      box_known = true;
+    }
+    double r0 = 0, r1 = 0;     // compensation value at the start and the end (D change, Q8)
+    double side = 1;           // +1: tool left of the travel, -1: right
+    long index = 0;            // traversing blocks since the selection (approach = 0)
+    bool valid = true;         // has an equidistant (an inside arc smaller than R has none)
+    bool open_before = false;  // no intersection with the previous element (yet)
+    bool approach = false;     // the selection block's approach line
+    bool restart = false;      // starts anew: side change (G41 <-> G42, sign of R), STOPRE
+    bool emitted = false;      // already written (kept only to join the next element to)
     core::TrcStrategy strategy = core::TrcStrategy::G460;  // approach line
     geom::Vec2 first_tangent;  // approach line: the first element's start tangent (G462)
     std::vector<core::MotionBlock> transition;  // inserted before it (G450 circle, KONT)
     std::vector<core::MotionBlock> waiting;     // blocks without plane motion after it
+    geom::Box box_;                             // box(), when box_known
+    bool box_known = false;
   };
+  // `p.compensated` as it is now is the whole equidistant: its ends are kept (raw_start,
+  // raw_end) and its box computed when asked (with the general paths at once, the twin).
+  static void keepRaw(Piece& p) {
+    p.raw_start = p.compensated.p0;
+    p.raw_end = p.compensated.p1;
+    p.box_known = false;
+    if (general_paths_) p.setBox();
+  }
 
   // Forward declaration; defined in corners.cpp (the geometry of one junction).
   struct Corner;
@@ -130,6 +163,10 @@ class RadiusCompensation final : public core::Stage {
   void emitPiece(const Piece& p);
   Piece compensate(const core::MotionBlock& m, double r0, double r1) const;
   void compensateInto(Piece& p, const core::MotionBlock& m, double r0, double r1) const;
+  // compensateInto's steps: the slot's fields but the geometry; the geometry of the usual element
+  // (one value, no scaling frame), the fast twin of compensateInto's general path.
+  void startPiece(Piece& p, const core::MotionBlock& m, double r0, double r1) const;
+  void compensateConstant(Piece& p, const core::MotionBlock& m, double r) const;
   // The equidistant at the constant value the corner calculation uses (details Q8: the end
   // value of the first element, the start value of the second).
   geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
@@ -165,6 +202,12 @@ class RadiusCompensation final : public core::Stage {
   // not in bottleneck.cpp: the driver asks it for every block.)
   bool anyOpen() const {
     return window_.any([](const Piece& p) { return p.open_before || !p.valid; });
+  }
+  // anyOpen() once `next` (the last element) is joined: with none open before it (maybe_open_
+  // false: the usual contour) only `next` can be, and the walk over the window is saved (§36).
+  bool openWith(const Piece& next) const {
+    if (!maybe_open_) return next.open_before || !next.valid;
+    return anyOpen();
   }
   // Intersects `next` with earlier elements of the window; `needed`: anyOpen() (CDOF searches
   // only then, CDON always).
@@ -208,7 +251,12 @@ class RadiusCompensation final : public core::Stage {
   static double sideOf(const core::TrcSettings& t) {
     return (t.mode == core::TrcMode::Left) != (t.radius < 0) ? 1.0 : -1.0;
   }
-  double side() const { return sideOf(settings_); }
+  double side() const { return side_; }
+  // settings_ and the side they give (side_: asked for every element, computed once a block).
+  void setSettings(const core::TrcSettings& t) {
+    settings_ = t;
+    side_ = sideOf(t);
+  }
 
   core::Stage& out_;
   bool pass_programmed_ = true;  // set per run by the channel
@@ -221,12 +269,18 @@ class RadiusCompensation final : public core::Stage {
   bool constant_ = false;       // CUTCONON: blocks are shifted by constant_offset_
   geom::Vec2 constant_offset_;  // the offset vector at the end of the last compensated block
   int dummy_blocks_ = 0;
-  core::TrcSettings settings_;  // of the last block
+  core::TrcSettings settings_;  // of the last block (set by setSettings)
+  double side_ = -1;            // sideOf(settings_)
   // The plane's lengths under the selection block's frame (SCALE): the window's elements are in
   // these coordinates, so that R is kept in the machine (toElement / geometry convert).
   geom::PlaneMetric metric_;
   bool projected_ = false;  // CUT2D in a plane the frame tilts: compensated in its projection
   bool rare_ = false;       // projected_ or constant_: checkSameSettings takes rareSettings
+  // An element of the window may be open or without equidistant (false: none is, so openWith
+  // looks at the new one only). Set by every change of the window but motionOn's and the
+  // selection's (bottleneck detection and release close and remove, never open).
+  bool maybe_open_ = true;
+  static inline bool general_paths_ = false;  // useGeneralPaths
 };
 
 }  // namespace ncoffset::trc
