@@ -27,14 +27,14 @@ bool afterStartOn(double u, double len) {
 }  // namespace
 
 void RadiusCompensation::approachLine(Piece& approach, Piece& first) {
-  // Every field is set: `approach` is a reused slot of the window (its vectors keep their memory).
-  approach.block = selection_;
+  // Every field is set: `approach` is a reused slot of the window (its vectors keep their memory);
+  // its block is the selection block already (startSelection).
   approach.r0 = approach.r1 = 0;
   approach.index = 0;
   approach.valid = true;
   approach.open_before = approach.restart = approach.emitted = false;
   approach.approach = true;
-  approach.strategy = selection_.trc.strategy;
+  approach.strategy = approach.block.trc.strategy;
   approach.transition.clear();
   approach.waiting.clear();
   approach.side = first.side;
@@ -42,12 +42,12 @@ void RadiusCompensation::approachLine(Piece& approach, Piece& first) {
   // and KONT, so not computed for every approach (docs/performance.md §36).
   if (approach.strategy == TrcStrategy::G462)
     approach.first_tangent = first.programmed.startTangent();
-  approach.programmed = toElement(selection_);
+  approach.programmed = toElement(approach.block);
   approach.compensated = Element{};
   approach.compensated.p0 = approach.programmed.p0;
   approach.compensated.p1 = first.compensated.p0;
   const Vec2 p1 = first.programmed.p0;
-  if (selection_.trc.approach == Approach::Kont &&
+  if (approach.block.trc.approach == Approach::Kont &&
       geom::dot(approach.programmed.p0 - p1,
                 first.side * geom::leftNormal(first.programmed.startTangent())) < -tol::kPoint) {
     approach.strategy =
@@ -78,7 +78,7 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
     throw AlarmError(
         AlarmNumber::TrcKontSelection,
         "activation of tool radius compensation via KONT not possible in current start point",
-        selection_.line);  // the selection block is the one to change
+        approach.block.line);  // the selection block is the one to change
   Element line;
   line.p0 = p0;
   line.p1 = *t;
@@ -99,14 +99,17 @@ void RadiusCompensation::kontApproach(Piece& approach, Piece& first) {
       return;
     }
   }
-  PlaneAxes pa = planeAxes(selection_.plane);
+  MotionBlock& selection = approach.block;  // (the selection block, §36)
+  PlaneAxes pa = planeAxes(selection.plane);
   approach.compensated.p1 = *t;
-  approach.block.end[pa.applicate] = approach.block.start[pa.applicate];  // moves with the circle
   first.transition.clear();
-  transition(first.transition, selection_, *t, dir, first.compensated.p0,
+  // The circle runs from the height where the line ends to the selection block's end (before
+  // the line's end is moved: it is that block).
+  transition(first.transition, selection, *t, dir, first.compensated.p0,
              first.programmed.startTangent(), p1, s,
              settings_.corner == CornerMode::TransitionCircle ? settings_.disc : 0,
-             approach.block.end[pa.applicate], selection_.end[pa.applicate]);
+             selection.start[pa.applicate], selection.end[pa.applicate]);
+  selection.end[pa.applicate] = selection.start[pa.applicate];  // moves with the circle
 }
 
 void RadiusCompensation::retract(const MotionBlock& m) {

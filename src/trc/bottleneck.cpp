@@ -96,7 +96,7 @@ std::optional<geom::Crossing> RadiusCompensation::bridgeCrossing(
 }
 
 void RadiusCompensation::omitAfter(size_t keep, Vec2 at, bool keep_last) {
-  PlaneAxes pa = planeAxes(selection_.plane);
+  PlaneAxes pa = planeAxes(sel_plane_);
   const size_t end = keep_last ? window_.size() - 1 : window_.size();
   for (size_t i = keep + 1; i < end; ++i) {
     Piece& p = window_[i];

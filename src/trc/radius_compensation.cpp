@@ -17,13 +17,13 @@ using core::TrcMode;
 using geom::Element;
 
 NCOFFSET_INLINE_STEP bool RadiusCompensation::checkSameSettings(const MotionBlock& m) {
-  if (m.plane != selection_.plane)
+  if (m.plane != sel_plane_)
     raise(AlarmNumber::TrcPlaneChange,
           "change of compensation plane not possible while tool radius compensation is active");
-  if (!m.frame.sameAs(selection_.frame))
+  if (!m.frame.sameAs(sel_frame_))
     detail::notModelled("a frame change while compensation is active");
   // G groups 22 and 40 in one comparison (the selection block never has CUTCONON).
-  if (groupBytes(m.trc) != groupBytes(selection_.trc) || rare_) [[unlikely]]
+  if (groupBytes(m.trc) != sel_groups_ || rare_) [[unlikely]]
     return rareSettings(m);
   return false;
 }
@@ -40,7 +40,7 @@ NCOFFSET_INLINE_STEP bool RadiusCompensation::checkSameSettings(const MotionBloc
 // The projection of a circle is an ellipse and motion along the applicate moves the projection:
 // neither is modelled.
 [[gnu::noinline]] void RadiusCompensation::checkProjectable(const MotionBlock& m) const {
-  if (m.trc.frame_plane != selection_.trc.frame_plane)
+  if (m.trc.frame_plane != sel_frame_plane_)
     detail::notModelled("a change between CUT2D and CUT2DF while compensation is active");
   if (!projected_) return;
   if (m.motion == Motion::G2 || m.motion == Motion::G3)
@@ -117,7 +117,12 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
     detail::notModelled(m.trc.approach == Approach::KontC ? "KONTC" : "KONTT");
   constant_ = false;  // (a G40 while CUTCONON was active left it set)
   setSettings(m.trc);
-  selection_ = m;
+  window_.clear();  // (empty: the window is written and cleared when compensation ends)
+  window_.pushBack().block = m;
+  sel_plane_ = m.plane;
+  sel_frame_ = m.frame;
+  sel_groups_ = groupBytes(m.trc);
+  sel_frame_plane_ = m.trc.frame_plane;
   metric_ = planeMetric(m, projected_);
   rare_ = projected_;
   state_ = State::Selecting;
@@ -127,9 +132,10 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
 void RadiusCompensation::motionSelecting(const MotionBlock& m) {
   if (m.trc.mode == TrcMode::Off) {
     // G40 in the block after the selection block: no selection takes place (W1 2-41).
-    emit(selection_);
+    emit(selection());
     for (const auto& w : waiting_) emit(w);
     waiting_.clear();
+    window_.clear();
     emit(m);
     state_ = State::Off;
     return;
@@ -143,11 +149,9 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
   if (sideOf(m.trc) != side()) setSettings(m.trc);  // the side of the first element counts
   // The first element starts at the value of the selection block; a new value programmed in it
   // (D, T) is spread over it like in any later block (details Q8).
-  const double r0 = std::fabs(selection_.trc.radius), r1 = std::fabs(m.trc.radius);
-  // The approach line and the first element are built in the window's first two slots (it is
-  // empty while selecting), not as Pieces moved in (docs/performance.md §31).
-  window_.clear();
-  window_.pushBack();
+  const double r0 = std::fabs(selection().trc.radius), r1 = std::fabs(m.trc.radius);
+  // The approach line and the first element are built in the window's first two slots (the
+  // first holds the selection block), not as Pieces moved in (docs/performance.md §31, §36).
   window_.pushBack();
   Piece& first = window_[1];
   compensateInto(first, m, r0, std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1);
@@ -241,15 +245,15 @@ std::optional<Vec3> RadiusCompensation::preprocessorStop(bool alarm) {
   std::optional<Vec3> stands;  // the end of the last block written: where the tool stands
   if (state_ == State::Selecting) {
     const double r = std::fabs(settings_.radius);
-    anchor = compensate(selection_, r, r);
+    anchor = compensate(selection(), r, r);
     Element approach;
     approach.p0 = anchor.programmed.p0;
     approach.p1 = anchor.compensated.p1;
-    MotionBlock line = toBlock(selection_, approach);
+    MotionBlock line = toBlock(selection(), approach);
     detail::keepTipAt(line, core::kTipEnd);
     emit(line);
     for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));
-    stands = atPoint(waiting_.empty() ? selection_ : waiting_.back(), approach.p1).end;
+    stands = atPoint(waiting_.empty() ? selection() : waiting_.back(), approach.p1).end;
     waiting_.clear();
     state_ = State::On;
     count_ = 0;
@@ -274,11 +278,11 @@ void RadiusCompensation::flush() {
   if (state_ == State::Selecting) {
     // No contour element follows the selection block: it ends on its own normal.
     const double r = std::fabs(settings_.radius);
-    Piece only = compensate(selection_, r, r);
+    Piece only = compensate(selection(), r, r);
     Element approach;
     approach.p0 = only.programmed.p0;
     approach.p1 = only.compensated.p1;
-    MotionBlock line = toBlock(selection_, approach);
+    MotionBlock line = toBlock(selection(), approach);
     detail::keepTipAt(line, core::kTipEnd);
     emit(line);
     for (const MotionBlock& w : waiting_) emit(atPoint(w, approach.p1));

@@ -261,7 +261,15 @@ class RadiusCompensation final : public core::Stage {
   core::Stage& out_;
   bool pass_programmed_ = true;  // set per run by the channel
   State state_ = State::Off;
-  core::MotionBlock selection_;             // the G41/G42 block waiting for the first element
+  // The G41/G42 block waiting for the first element: while selecting, the block of the window's
+  // first slot, which becomes the approach line's (so it is copied once, docs/performance.md
+  // §36). What the active compensation keeps comparing with after that: its plane, frame and
+  // G groups 22 and 40.
+  const core::MotionBlock& selection() const { return window_[0].block; }
+  Plane sel_plane_ = Plane::G17;
+  core::BlockFrame sel_frame_;
+  std::uint16_t sel_groups_ = 0;            // groupBytes
+  bool sel_frame_plane_ = false;            // G group 22: CUT2DF
   std::vector<core::MotionBlock> waiting_;  // blocks without plane motion after the selection
   PieceWindow<Piece> window_;
   long count_ = 0;              // traversing blocks since the selection
