@@ -144,7 +144,7 @@ void RadiusCompensation::retract(const MotionBlock& m) {
     retract.p0 = fin.compensated.p1;
   }
   flushAll();
-  MotionBlock line = toBlock(m, retract);
+  MotionBlock line = lineToEnd(m, retract);
   detail::keepTipAt(line, core::kTipStart);
   emit(line);
   state_ = State::Off;

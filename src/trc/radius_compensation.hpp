@@ -155,6 +155,9 @@ class RadiusCompensation final : public core::Stage {
   // Program coordinates to the machine's lengths (a scaling frame; not inlined: rare).
   [[gnu::noinline]] void toMetric(geom::Element& e) const;
   core::MotionBlock toBlock(const core::MotionBlock& like, const geom::Element& e) const;
+  // toBlock(m, e) for a line `e` from anywhere to the plane end point of block m itself (the
+  // retraction line); the fast twin of toBlock.
+  core::MotionBlock lineToEnd(const core::MotionBlock& m, const geom::Element& e) const;
   // The geometry of element `e` as a motion of block `like` (lines stay G0/G1).
   core::Geometry geometry(const core::MotionBlock& like, const geom::Element& e) const;
   // A block of `like` that keeps its applicate motion but stands at plane point `at`.
