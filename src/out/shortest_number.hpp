@@ -99,7 +99,10 @@ inline char* writeFixed(char* out, double v) {
   const auto m = static_cast<long long>(a * 1e6 + 0.5);
   if (static_cast<double>(m) / 1e6 != a) return nullptr;  // more than six decimals
   if (v < 0) *out++ = '-';
-  out = writeUnsigned(out, static_cast<unsigned>(m / 1000000));
+  const auto whole_part = static_cast<unsigned>(m / 1000000);
+  // (Below 10000, the usual coordinate, the short writer: GCC inlines it, and kept the whole
+  // writeUnsigned out of line here, §37.)
+  out = whole_part < 10000 ? writeBelow10000(out, whole_part) : writeUnsigned(out, whole_part);
   const auto frac = static_cast<unsigned>(m % 1000000);  // not 0: v is no whole number
   // Two groups of three digits; at most three decimals (most CAM output) write only the first.
   // Trailing zeros are cut off by the table, without a loop over the digits.
