@@ -81,10 +81,10 @@ CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
 
 void CsvWriter::segment(const Segment& s) {
   // Written in place at the end of the buffer: room for 9 fields of at most 32 characters is
-  // made first, the unused part is cut off after the row.
+  // reserved first (its capacity, not its size: the size is set once, after the row).
   auto& b = w_.buf();
   const size_t used = b.size();
-  b.resize(used + kMaxRow + axis_room_);
+  b.reserve(used + kMaxRow + axis_room_);
   char* const row = b.data() + used;
   char* p = writeLine(row, s.line);
   *p++ = ',';
