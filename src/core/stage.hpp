@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/motion_block.hpp"
+#include "geom/contour.hpp"
 
 namespace ncoffset::core {
 
@@ -38,9 +39,12 @@ class Stage {
   virtual ~Stage() = default;
   // A motion block, in program order.
   virtual Feedback motion(const MotionBlock& m) = 0;
-  // A compensated element: the geometry `g` with everything else (line, feed, frame, tool) from
-  // `like`. By default a copy of `like` with `g` goes to motion().
-  virtual void element(const MotionBlock& like, const Geometry& g);
+  // A compensated element: the plane element `e` (program coordinates, in `like`'s plane) with
+  // everything else (the applicate, line, feed, frame, tool) from `like`, and which of its points
+  // get a turning tool's P - S (`tip_at`). Radius compensation hands over its window's element
+  // itself, no geometry built from it (docs/performance.md §37). By default a copy of `like` with
+  // planeGeometry(like, e, tip_at) goes to motion().
+  virtual void element(const MotionBlock& like, const geom::Element& e, std::uint8_t tip_at);
   // The programmed (uncompensated) motion of a block, for sinks that draw the contour.
   virtual void programmed(const MotionBlock&) {}
   // A warning that does not stop the run, at the block `at`.
@@ -55,8 +59,32 @@ class Stage {
   virtual void flush() {}
 };
 
-inline void Stage::element(const MotionBlock& like, const Geometry& g) {
-  motion(withGeometry(like, g));
+// The geometry of plane element `e` (program coordinates) as a motion of block `like`: lines
+// stay G0/G1 (a G2/G3 block whose element became a line is G1), an arc's centre lies at its
+// start's applicate.
+inline Geometry planeGeometry(const MotionBlock& like, const geom::Element& e,
+                              std::uint8_t tip_at) {
+  const PlaneAxes pa = planeAxes(like.plane);
+  Geometry g{like.motion, tip_at, like.start, like.end, like.centre, like.applicate, like.turns};
+  g.start[pa.abscissa] = e.p0.a;
+  g.start[pa.ordinate] = e.p0.o;
+  g.end[pa.abscissa] = e.p1.a;
+  g.end[pa.ordinate] = e.p1.o;
+  if (e.arc) {
+    g.motion = e.ccw ? Motion::G3 : Motion::G2;
+    g.centre[pa.abscissa] = e.c.a;
+    g.centre[pa.ordinate] = e.c.o;
+    g.centre[pa.applicate] = g.start[pa.applicate];
+    g.applicate = pa.applicate;
+    g.turns = e.turns;
+  } else if (g.motion == Motion::G2 || g.motion == Motion::G3) {
+    g.motion = Motion::G1;
+  }
+  return g;
+}
+
+inline void Stage::element(const MotionBlock& like, const geom::Element& e, std::uint8_t tip_at) {
+  motion(withGeometry(like, planeGeometry(like, e, tip_at)));
 }
 
 }  // namespace ncoffset::core

@@ -42,19 +42,51 @@ inline char* CsvWriter::writeMemo(char* p, double v, Memo& m) {
   return end;
 }
 
+// The 16 bytes of the text are copied at once (the row has room, as for writeMemo). A line
+// number is at most 11 characters ("-2147483648"); negative ones are written anew each time.
+inline char* CsvWriter::writeLine(char* p, int line) {
+  LineMemo& m = line_;
+  if (line == m.value + 1) [[likely]] {
+    m.value = line;
+    char& last = m.text[m.len - 1];
+    if (last != '9') [[likely]]
+      ++last;
+    else
+      carry(m);
+  } else if (line != m.value) {
+    char* const end = line >= 0 ? writeUnsigned(m.text, static_cast<unsigned>(line))
+                                : std::to_chars(m.text, m.text + 11, line).ptr;
+    m.len = static_cast<size_t>(end - m.text);
+    m.value = line >= 0 ? line : LineMemo::kNone;
+  }
+  std::memcpy(p, m.text, sizeof m.text);
+  return p + m.len;
+}
+
+void CsvWriter::carry(LineMemo& m) {
+  // "199" + 1 -> "200"; all nines ("999") became zeros and get a leading one ("1000").
+  char* d = m.text + m.len - 1;
+  while (*d == '9' && d != m.text) *d-- = '0';
+  if (*d != '9') {
+    ++*d;
+    return;
+  }
+  *d = '1';
+  m.text[m.len++] = '0';
+}
+
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
   fmt::format_to(fmt::appender(w_.buf()), kHeader);
 }
 
 void CsvWriter::segment(const Segment& s) {
   // Written in place at the end of the buffer: room for 9 fields of at most 32 characters is
-  // made first, the unused part is cut off after the row.
+  // reserved first (its capacity, not its size: the size is set once, after the row).
   auto& b = w_.buf();
   const size_t used = b.size();
-  b.resize(used + kMaxRow + axis_room_);
+  b.reserve(used + kMaxRow + axis_room_);
   char* const row = b.data() + used;
-  char* p = s.line >= 0 ? writeUnsigned(row, static_cast<unsigned>(s.line))
-                        : std::to_chars(row, row + 11, s.line).ptr;
+  char* p = writeLine(row, s.line);
   *p++ = ',';
   static_assert(static_cast<int>(Motion::G0) == 0 && static_cast<int>(Motion::G3) == 3);
   if (s.motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 
 namespace ncoffset::out {
@@ -77,20 +78,31 @@ inline constexpr TrailingZeros kTrailingZeros{};
 // each other, so a value equal to n / 1e6 (n an integer) has no shorter representation than
 // n / 1e6 with its trailing zeros removed, and that text reads back as n / 1e6 = v (the
 // division is correctly rounded, as is reading the text).
+//
+// A whole number is the signed integer conversion of v itself (one instruction each way; -0
+// becomes 0, so it prints as 0): no absolute value, no test of the sign before it is known
+// to be needed (docs/performance.md §37).
 inline char* writeFixed(char* out, double v) {
-  const double a = v < 0 ? -v : v;
-  if (!(a < 1e9)) return nullptr;               // also NaN
-  const auto whole = static_cast<unsigned>(a);  // a < 1e9 < 2^32
-  if (static_cast<double>(whole) == a) {
-    if (v < 0 && whole != 0) *out++ = '-';  // -0 prints as 0
-    return writeUnsigned(out, whole);
+  if (!(std::fabs(v) < 1e9)) return nullptr;  // also NaN
+  const auto whole = static_cast<int>(v);     // |v| < 1e9 < 2^31
+  if (static_cast<double>(whole) == v) {
+    auto u = static_cast<unsigned>(whole);
+    if (whole < 0) {
+      *out++ = '-';
+      u = 0u - u;
+    }
+    return writeUnsigned(out, u);
   }
+  const double a = std::fabs(v);
   if (a < 1e-4) return nullptr;  // {fmt} writes these with an exponent
   // Signed 64-bit conversions (one instruction each): m < 1e15 + 1.
   const auto m = static_cast<long long>(a * 1e6 + 0.5);
   if (static_cast<double>(m) / 1e6 != a) return nullptr;  // more than six decimals
   if (v < 0) *out++ = '-';
-  out = writeUnsigned(out, static_cast<unsigned>(m / 1000000));
+  const auto whole_part = static_cast<unsigned>(m / 1000000);
+  // (Below 10000, the usual coordinate, the short writer: GCC inlines it, and kept the whole
+  // writeUnsigned out of line here, §37.)
+  out = whole_part < 10000 ? writeBelow10000(out, whole_part) : writeUnsigned(out, whole_part);
   const auto frac = static_cast<unsigned>(m % 1000000);  // not 0: v is no whole number
   // Two groups of three digits; at most three decimals (most CAM output) write only the first.
   // Trailing zeros are cut off by the table, without a loop over the digits.

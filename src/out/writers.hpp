@@ -66,11 +66,23 @@ class CsvWriter : public PathSink {
     char text[32] = {};
   };
   static char* writeMemo(char* p, double v, Memo& m);
+  // The line number's text: the row before's while the line repeats, incremented in place
+  // while the rows come from consecutive lines (docs/performance.md §37).
+  struct LineMemo {
+    // A negative line, or none yet: no line is kNone or kNone + 1.
+    static constexpr long long kNone = std::numeric_limits<long long>::min() / 2;
+    long long value = kNone;  // the line whose text `text` holds (>= 0)
+    size_t len = 0;
+    char text[16] = {};
+  };
+  char* writeLine(char* p, int line);
+  [[gnu::noinline]] static void carry(LineMemo& m);  // the next line after a 9
   char* writeAxes(char* p) const;
   BufferedWriter w_;
   AxisColumns axes_;
   size_t axis_room_ = 0;  // characters the axis fields of a row may take
   Memo z_, feed_;
+  LineMemo line_;
 };
 
 // Puts the additional axes' names into a CSV header still in `w`'s buffer (false: the header

@@ -14,8 +14,10 @@ using core::MotionBlock;
 // (Inlined into its callers, one a segment: the Segment is built in place, 10 % of the
 // placement's instructions, docs/performance.md §26. Its fields are computed first and the
 // Segment initialised from them at once, one object returned on every path: `Segment s;` zeroed
-// all of it before the fields were written, §28.)
-NCOFFSET_INLINE_STEP Segment Placement::toSegment(const MotionBlock& m, const Geometry& g) const {
+// all of it before the fields were written, §28. A template: motion() hands the block itself
+// as its geometry, no copy of its points, §37.)
+template <typename G>
+NCOFFSET_INLINE_STEP Segment Placement::toSegment(const MotionBlock& m, const G& g) const {
   Vec3 normal;
   normal[g.applicate] = 1;
   Vec3 start, end, centre;
@@ -29,12 +31,45 @@ NCOFFSET_INLINE_STEP Segment Placement::toSegment(const MotionBlock& m, const Ge
     end = g.end + m.tool_offset;
     if (g.motion == Motion::G2 || g.motion == Motion::G3) centre = g.centre + m.tool_offset;
   } else [[unlikely]] {
-    framedPoints(m, g, start, end, centre, normal, motion);
+    framedPoints(m, {g.motion, g.tip_at, g.start, g.end, g.centre, g.applicate, g.turns}, start,
+                 end, centre, normal, motion);
   }
   Segment s{m.line, m.file,  motion, start,       end,        centre,
             normal, g.turns, m.feed, m.feed_unit, m.has_feed, m.lead_change};
-  if (g.tip_at != core::kTipNone) addTip(s, m, g);  // turning tools with TRC only
+  if (g.tip_at != core::kTipNone) addTip(s, m, g.tip_at, g.motion);  // turning tools with TRC
   return s;
+}
+
+// toSegment of a block itself in MCS without a frame or P - S: its points with the tool offset,
+// each written once (docs/performance.md §37).
+NCOFFSET_INLINE_STEP Segment Placement::blockSegment(const MotionBlock& m) const {
+  const Vec3& o = m.tool_offset;
+  Vec3 normal;
+  normal[m.applicate] = 1;
+  const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
+  return Segment{m.line, m.file,  m.motion, m.start + o, m.end + o,  arc ? m.centre + o : Vec3{},
+                 normal, m.turns, m.feed,   m.feed_unit, m.has_feed, m.lead_change};
+}
+
+// planeGeometry (core/stage.hpp) for G17 and toSegment's MCS case without a frame in one: the
+// plane's points from the element, the applicate from the block, the tool offset added.
+NCOFFSET_INLINE_STEP Segment Placement::planeSegment(const MotionBlock& like,
+                                                     const geom::Element& e) const {
+  const Vec3& o = like.tool_offset;
+  const Vec3 start{e.p0.a + o.x, e.p0.o + o.y, like.start.z + o.z};
+  const Vec3 end{e.p1.a + o.x, e.p1.o + o.y, like.end.z + o.z};
+  if (e.arc) {
+    return Segment{like.line,      like.file,     e.ccw ? Motion::G3 : Motion::G2,
+                   start,          end,           {e.c.a + o.x, e.c.o + o.y, start.z},
+                   {0, 0, 1},      e.turns,       like.feed,
+                   like.feed_unit, like.has_feed, like.lead_change};
+  }
+  Vec3 normal;
+  normal[like.applicate] = 1;
+  const Motion line =
+      like.motion == Motion::G2 || like.motion == Motion::G3 ? Motion::G1 : like.motion;
+  return Segment{like.line, like.file,  line,      start,          end,           Vec3{},
+                 normal,    like.turns, like.feed, like.feed_unit, like.has_feed, like.lead_change};
 }
 
 void Placement::framedPoints(const MotionBlock& m, const Geometry& g, Vec3& start, Vec3& end,
@@ -59,16 +94,16 @@ void Placement::framedPoints(const MotionBlock& m, const Geometry& g, Vec3& star
   if (flip) motion = g.motion == Motion::G2 ? Motion::G3 : Motion::G2;
 }
 
-void Placement::addTip(Segment& s, const MotionBlock& m, const Geometry& g) const {
+void Placement::addTip(Segment& s, const MotionBlock& m, std::uint8_t tip_at, Motion motion) const {
   // The lengths refer to the tool tip P; radius compensation guided the cutting edge centre S,
   // so the points it made get P - S (docs/cutting-edge-positions.md). The vector is fixed in
   // the BCS; in WCS coordinates it is the frame's inverse image.
   Vec3 tip = m.tip;
   if (coords_ == CoordSystem::WCS && !m.frame.isIdentity()) tip = m.frame.linear().inverse() * tip;
-  if (g.tip_at & core::kTipStart) s.start = s.start + tip;
-  if (g.tip_at & core::kTipEnd) {
+  if (tip_at & core::kTipStart) s.start = s.start + tip;
+  if (tip_at & core::kTipEnd) {
     s.end = s.end + tip;
-    if (g.motion == Motion::G2 || g.motion == Motion::G3) s.centre = s.centre + tip;
+    if (motion == Motion::G2 || motion == Motion::G3) s.centre = s.centre + tip;
   }
 }
 
@@ -81,7 +116,7 @@ bool inRange(const Vec3& p) {  // false for NaN too; one branch for the three ax
   return (std::fabs(p.x) <= 1e9) & (std::fabs(p.y) <= 1e9) & (std::fabs(p.z) <= 1e9);
 }
 
-[[noreturn]] void outOfRange(const Segment& s, int line) {
+[[noreturn, gnu::cold, gnu::noinline]] void outOfRange(const Segment& s, int line) {
   const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
   for (const Vec3* p : {&s.end, &s.centre})
     for (int i = 0; i < 3; ++i)
@@ -94,7 +129,7 @@ bool inRange(const Vec3& p) {  // false for NaN too; one branch for the three ax
   throw AlarmError(AlarmNumber::ValueRange, "value range exceeded", line);
 }
 
-void checkRange(const Segment& s, int line) {
+NCOFFSET_INLINE_STEP void checkRange(const Segment& s, int line) {
   const bool arc = s.motion == Motion::G2 || s.motion == Motion::G3;
   if (inRange(s.end) && (!arc || inRange(s.centre))) return;
   outOfRange(s, line);
@@ -123,23 +158,47 @@ void Placement::rejoin(Segment& s, const MotionBlock& m, Joint& j) const {
   j.frame = m.frame;
 }
 
-core::Feedback Placement::motion(const MotionBlock& m) {
-  Segment s = toSegment(m, core::geometryOf(m));
+NCOFFSET_INLINE_STEP void Placement::place(Segment& s, const MotionBlock& m, bool check) {
   join(s, m, path_);
-  // Blocks that radius compensation made or moved (corner circles, approach and retraction
-  // lines) carry its settings; programmed positions were checked by the interpreter.
-  if (m.trc.mode != core::TrcMode::Off) checkRange(s, m.line);
+  if (check) checkRange(s, m.line);
   seq_ = m.seq;
   emit(s);
+}
+
+core::Feedback Placement::motion(const MotionBlock& m) {
+  // Blocks that radius compensation made or moved (corner circles, approach and retraction
+  // lines) carry its settings; programmed positions were checked by the interpreter.
+  const bool check = m.trc.mode != core::TrcMode::Off;
+  const bool usual =
+      coords_ == CoordSystem::MCS && m.frame.isIdentity() && m.tip_at == core::kTipNone;
+  if (!usual) [[unlikely]] {
+    generalMotion(m, check);
+    return {};
+  }
+  Segment s = blockSegment(m);
+  place(s, m, check);
   return {};
 }
 
-void Placement::element(const MotionBlock& like, const Geometry& g) {
-  Segment s = toSegment(like, g);
-  join(s, like, path_);
-  checkRange(s, like.line);
-  seq_ = like.seq;
-  emit(s);
+void Placement::generalMotion(const MotionBlock& m, bool check) {
+  Segment s = toSegment(m, m);
+  place(s, m, check);
+}
+
+void Placement::element(const MotionBlock& like, const geom::Element& e, std::uint8_t tip_at) {
+  const bool usual = like.plane == Plane::G17 && coords_ == CoordSystem::MCS &&
+                     like.frame.isIdentity() && tip_at == core::kTipNone;
+  if (!usual) [[unlikely]]
+    return generalElement(like, e, tip_at);
+  Segment s = planeSegment(like, e);
+  place(s, like, true);
+}
+
+void Placement::generalElement(const MotionBlock& like, const geom::Element& e,
+                               std::uint8_t tip_at) {
+  // The element as a geometry of the block (core::planeGeometry), as Stage::element has it.
+  Segment s = toSegment(like, core::planeGeometry(like, e, tip_at));
+  place(s, like, true);
 }
 
 void Placement::warning(const MotionBlock& m, int number, const std::string& text) {
@@ -148,7 +207,7 @@ void Placement::warning(const MotionBlock& m, int number, const std::string& tex
 }
 
 void Placement::programmedSegment(const MotionBlock& m) {
-  Segment s = toSegment(m, core::geometryOf(m));
+  Segment s = toSegment(m, m);
   join(s, m, programmed_);
   sink_.programmed(s);
 }

@@ -34,7 +34,7 @@ class Placement final : public core::Stage {
   }
   // A motion of the (compensated) path.
   core::Feedback motion(const core::MotionBlock& m) override;
-  void element(const core::MotionBlock& like, const core::Geometry& g) override;
+  void element(const core::MotionBlock& like, const geom::Element& e, std::uint8_t tip_at) override;
   // The programmed motion of a block, for sinks that draw the contour (PathSink::programmed).
   void programmed(const core::MotionBlock& m) override {
     if (wants_programmed_) programmedSegment(m);
@@ -72,12 +72,26 @@ class Placement final : public core::Stage {
   }
   void rejoin(Segment& s, const core::MotionBlock& m, Joint& j) const;
   void programmedSegment(const core::MotionBlock& m);
-  Segment toSegment(const core::MotionBlock& m, const core::Geometry& g) const;
+  // The segment of geometry `g` (a core::Geometry, or the block `m` itself) in block `m`.
+  template <typename G>
+  Segment toSegment(const core::MotionBlock& m, const G& g) const;
+  // element()'s usual case (G17, MCS, no frame, no turning tool's P - S): the segment straight
+  // from the element, without its geometry as a block (docs/performance.md §37).
+  Segment planeSegment(const core::MotionBlock& like, const geom::Element& e) const;
+  // element()'s other cases (out of line: the usual one stays short).
+  [[gnu::noinline]] void generalElement(const core::MotionBlock& like, const geom::Element& e,
+                                        std::uint8_t tip_at);
+  // motion()'s usual case (MCS, no frame, no P - S): the segment straight from the block.
+  Segment blockSegment(const core::MotionBlock& m) const;
+  // motion()'s other cases (out of line).
+  [[gnu::noinline]] void generalMotion(const core::MotionBlock& m, bool check);
+  // The segment's way out: joined to the path, range checked (`check`), to the sink.
+  void place(Segment& s, const core::MotionBlock& m, bool check);
   // toSegment's points, normal and sense under a frame (MCS coordinates; out of line: rare).
   void framedPoints(const core::MotionBlock& m, const core::Geometry& g, Vec3& start, Vec3& end,
                     Vec3& centre, Vec3& normal, Motion& motion) const;
-  // P - S at the points of `g` on the path of S (core::TipAt).
-  void addTip(Segment& s, const core::MotionBlock& m, const core::Geometry& g) const;
+  // P - S at the points of `s` (of a motion `motion`) on the path of S (core::TipAt `tip_at`).
+  void addTip(Segment& s, const core::MotionBlock& m, std::uint8_t tip_at, Motion motion) const;
 
   void emit(const Segment& s) {
     if (!*waiting_) [[likely]]

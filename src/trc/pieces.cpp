@@ -46,47 +46,21 @@ void RadiusCompensation::toMetric(Element& e) const {
   e.c = metric_.to(e.c);
 }
 
-namespace {
-// The geometry of plane element `e` (program coordinates) as a motion of block `like`.
-NCOFFSET_INLINE_STEP core::Geometry planeGeometry(const MotionBlock& like, const Element& e) {
-  PlaneAxes pa = planeAxes(like.plane);
-  core::Geometry g{like.motion, core::kTipNone, like.start, like.end,
-                   like.centre, like.applicate, like.turns};
-  g.start[pa.abscissa] = e.p0.a;
-  g.start[pa.ordinate] = e.p0.o;
-  g.end[pa.abscissa] = e.p1.a;
-  g.end[pa.ordinate] = e.p1.o;
-  if (e.arc) {
-    g.motion = e.ccw ? Motion::G3 : Motion::G2;
-    g.centre[pa.abscissa] = e.c.a;
-    g.centre[pa.ordinate] = e.c.o;
-    g.centre[pa.applicate] = g.start[pa.applicate];
-    g.applicate = pa.applicate;
-    g.turns = e.turns;
-  } else if (g.motion == Motion::G2 || g.motion == Motion::G3) {
-    g.motion = Motion::G1;
-  }
-  return g;
-}
-
-}  // namespace
-
-core::Geometry RadiusCompensation::geometry(const MotionBlock& like, const Element& e) const {
-  if (metric_.identity) return planeGeometry(like, e);
+Element RadiusCompensation::fromMetric(const Element& e) const {
   // From the machine's lengths back to the program's coordinates (plane_metric.hpp).
   Element back = e;
   back.p0 = metric_.from(e.p0);
   back.p1 = metric_.from(e.p1);
   back.c = metric_.from(e.c);
-  return planeGeometry(like, back);
+  return back;
 }
 
 MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& e) const {
-  MotionBlock b = core::withGeometry(like, geometry(like, e));
   // Every block compensation makes lies on the path of S: P - S at both ends (the approach and
   // retraction lines clear one, detail::keepTipAt). Not per element: emitPiece marks those.
-  if (like.has_tip) b.tip_at = core::kTipBoth;
-  return b;
+  const std::uint8_t tip_at = like.has_tip ? core::kTipBoth : core::kTipNone;
+  return core::withGeometry(
+      like, core::planeGeometry(like, metric_.identity ? e : fromMetric(e), tip_at));
 }
 
 MotionBlock RadiusCompensation::lineToEnd(const MotionBlock& m, const Element& e) const {
@@ -214,11 +188,24 @@ Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const
 }
 
 void RadiusCompensation::emitPiece(const Piece& p) {
-  for (const MotionBlock& t : p.transition) emit(t);
-  core::Geometry g = geometry(p.block, p.compensated);
   // On the path of S (the approach line starts where P stood): P - S (cutting-edge-positions.md).
-  if (p.block.has_tip) g.tip_at = p.approach ? core::kTipEnd : core::kTipBoth;
-  out_.element(p.block, g);  // no copy of the block
+  const std::uint8_t tip_at = !p.block.has_tip ? core::kTipNone
+                              : p.approach     ? core::kTipEnd
+                                               : core::kTipBoth;
+  // The usual piece: nothing inserted before it, no block waiting after it, no scaling frame.
+  // The element itself goes on, no copy of the block nor a geometry built from the two, in a
+  // tail call (docs/performance.md §37).
+  if (p.transition.empty() && p.waiting.empty() && metric_.identity) [[likely]]
+    return out_.element(p.block, p.compensated, tip_at);
+  emitWithBlocks(p, tip_at);
+}
+
+void RadiusCompensation::emitWithBlocks(const Piece& p, std::uint8_t tip_at) {
+  for (const MotionBlock& t : p.transition) emit(t);
+  if (metric_.identity)
+    out_.element(p.block, p.compensated, tip_at);
+  else
+    out_.element(p.block, fromMetric(p.compensated), tip_at);
   for (const MotionBlock& w : p.waiting) emit(atPoint(w, p.compensated.p1));
 }
 

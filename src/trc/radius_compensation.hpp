@@ -158,12 +158,14 @@ class RadiusCompensation final : public core::Stage {
   // toBlock(m, e) for a line `e` from anywhere to the plane end point of block m itself (the
   // retraction line); the fast twin of toBlock.
   core::MotionBlock lineToEnd(const core::MotionBlock& m, const geom::Element& e) const;
-  // The geometry of element `e` as a motion of block `like` (lines stay G0/G1).
-  core::Geometry geometry(const core::MotionBlock& like, const geom::Element& e) const;
+  // Element `e` in the machine's lengths back in program coordinates (a scaling frame: rare).
+  [[gnu::noinline]] geom::Element fromMetric(const geom::Element& e) const;
   // A block of `like` that keeps its applicate motion but stands at plane point `at`.
   core::MotionBlock atPoint(const core::MotionBlock& like, geom::Vec2 at) const;
   void emit(const core::MotionBlock& m) { out_.motion(m); }
   void emitPiece(const Piece& p);
+  // emitPiece with blocks before or after the element, or a scaling frame (out of line).
+  [[gnu::noinline]] void emitWithBlocks(const Piece& p, std::uint8_t tip_at);
   Piece compensate(const core::MotionBlock& m, double r0, double r1) const;
   void compensateInto(Piece& p, const core::MotionBlock& m, double r0, double r1) const;
   // compensateInto's steps: the slot's fields but the geometry; the geometry of the usual element

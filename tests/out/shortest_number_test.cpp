@@ -101,6 +101,28 @@ TEST(ShortestNumber, EveryMicroFractionAsFmt) {
   }
 }
 
+// The fast path's whole numbers (the signed conversion of the value itself, §37) against {fmt}:
+// every one within ±100000 and its neighbours (no whole numbers: the fraction or slow path),
+// random ones up to the 1e9 limit, and the limits themselves.
+TEST(ShortestNumber, EveryWholeNumberAsFmt) {
+  for (int i = -100000; i <= 100000; ++i) {
+    const double v = i;
+    ASSERT_EQ(viaInline(v), viaFmt(v)) << v;
+    ASSERT_EQ(viaInline(std::nextafter(v, 1e300)), viaFmt(std::nextafter(v, 1e300))) << v;
+    ASSERT_EQ(viaInline(std::nextafter(v, -1e300)), viaFmt(std::nextafter(v, -1e300))) << v;
+  }
+  std::mt19937_64 rng(37);
+  std::uniform_int_distribution<int> any(-999999999, 999999999);
+  for (int i = 0; i < 1000000; ++i) {
+    const double v = any(rng);
+    ASSERT_EQ(viaInline(v), viaFmt(v)) << v;
+  }
+  for (double v : {999999999.0, -999999999.0, 1e9, -1e9, std::nextafter(1e9, 0.0),
+                   std::nextafter(-1e9, 0.0), 2147483647.0, -2147483648.0, 4294967295.0, -0.0, 0.0,
+                   std::numeric_limits<double>::infinity()})
+    EXPECT_EQ(viaInline(v), viaFmt(v)) << v;
+}
+
 std::string viaSlow(double v) {
   char text[32];
   return std::string(text, writeShortestSlow(text, v));

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <random>
 #include <sstream>
@@ -163,6 +164,38 @@ TEST(CsvWriter, RepeatedColumnsAsTheGeneralPath) {
       s.has_feed = keep(rng) != 0;
       w.segment(s);
       expected += generalRow(s);
+    }
+    w.finish(nullptr);
+  }
+  EXPECT_EQ(readAll(f.get()), expected);
+}
+
+// The line number from the memo of the row before (the same line, the next one: its digits
+// incremented in place) against the general path: runs of consecutive lines across every
+// carry (9 -> 10, 1999 -> 2000, 99999999 -> 100000000, up to INT_MAX), repeats, jumps back
+// and to negative numbers.
+TEST(CsvWriter, LineNumbersAsTheGeneralPath) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  std::mt19937_64 rng(37);
+  const int starts[] = {0,       1,        7,         95,         990, 1995, 99990,          999995,
+                        9999990, 99999990, 999999990, 2147483640, -1,  -12,  -2147483647 - 1};
+  std::uniform_int_distribution<int> pick(0, 14), step(0, 9), run(1, 40);
+  std::uniform_int_distribution<int> any(std::numeric_limits<int>::min(),
+                                         std::numeric_limits<int>::max());
+  std::string expected = kHeader + "\n";
+  {
+    CsvWriter w(f.get());
+    Segment s = line(1, Motion::G1, {1, 2, 3}, 100, true);
+    for (int i = 0; i < 20000; ++i) {
+      const int k = step(rng);
+      s.line = k < 6 ? starts[pick(rng)] : k < 8 ? any(rng) : s.line;  // a start, any, the same
+      for (int n = run(rng); n > 0; --n) {
+        w.segment(s);
+        expected += generalRow(s);
+        if (s.line == std::numeric_limits<int>::max()) break;
+        s.line += step(rng) < 8 ? 1 : 0;  // the next line, or the same again
+      }
     }
     w.finish(nullptr);
   }

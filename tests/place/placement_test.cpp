@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <random>
 #include <vector>
 
 #include "ncoffset/frame.hpp"
@@ -261,6 +263,116 @@ TEST(Placement, BypassGivesTheSegmentsOfTheGeneralPath) {
               general.segments[i].start.z);
     expectVec(s.end, general.segments[i].end.x, general.segments[i].end.y,
               general.segments[i].end.z);
+  }
+}
+
+// Two segments the same to the bit (a -0 is no 0 here).
+void expectSame(const Segment& a, const Segment& b) {
+  const auto same = [](const Vec3& u, const Vec3& v) { return std::memcmp(&u, &v, sizeof u) == 0; };
+  EXPECT_EQ(a.line, b.line);
+  EXPECT_EQ(a.file, b.file);
+  EXPECT_EQ(a.motion, b.motion);
+  EXPECT_TRUE(same(a.start, b.start));
+  EXPECT_TRUE(same(a.end, b.end));
+  EXPECT_TRUE(same(a.centre, b.centre));
+  EXPECT_TRUE(same(a.normal, b.normal));
+  EXPECT_EQ(a.turns, b.turns);
+  EXPECT_EQ(std::memcmp(&a.feed, &b.feed, sizeof a.feed), 0);
+  EXPECT_EQ(a.feed_unit, b.feed_unit);
+  EXPECT_EQ(a.has_feed, b.has_feed);
+  EXPECT_EQ(std::memcmp(&a.lead_change, &b.lead_change, sizeof a.lead_change), 0);
+}
+
+// The block with a P - S of -0 at both ends where it has none: the same segment (x + -0 is x,
+// also for x = -0) from the placement's general path (Placement::toSegment), never its fast
+// paths, which take only blocks without P - S. (Not under a frame in WCS: there the vector is
+// the frame's inverse image, maybe +0.)
+MotionBlock generalOnly(MotionBlock m) {
+  if (m.tip_at != core::kTipNone || !m.frame.isIdentity()) return m;
+  m.tip_at = core::kTipBoth;
+  m.tip = {-0.0, -0.0, -0.0};
+  return m;
+}
+
+// element() (its fast path for G17 in MCS without a frame or P - S, and the general one) against
+// the general definition, Stage::element: the block with core::planeGeometry to motion() (its
+// general path).
+// 20,000 random elements in random blocks: the three planes, lines of any motion and arcs, tool
+// offsets that change (rejoined), frames, WCS, turning tools, -0.
+TEST(Placement, ElementAsItsGeometryInTheBlock) {
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> any(-500, 500);
+  std::uniform_int_distribution<int> pick(0, 9);
+  const double pool[] = {0.0, -0.0, 1.5, -20, 2.7889999999999997};
+  const auto value = [&] { return pick(rng) < 3 ? pool[pick(rng) % 5] : any(rng); };
+  const auto point = [&] { return Vec3{value(), value(), value()}; };
+  Frame f;
+  f.coarse = {100, 0, 0};
+  f.rotation = {0, 30, 90};
+  for (CoordSystem cs : {CoordSystem::MCS, CoordSystem::WCS}) {
+    Collect fast, general;
+    Placement element(fast, cs, Vec3{1, 2, 3});
+    Placement motion(general, cs, Vec3{1, 2, 3});
+    MotionBlock like;
+    like.trc.mode = core::TrcMode::Left;  // range checked on both paths
+    for (int i = 0; i < 20000; ++i) {
+      like.line = i;
+      like.plane = static_cast<Plane>(pick(rng) < 6 ? 0 : pick(rng) % 3);
+      like.motion = static_cast<Motion>(pick(rng) % 5);  // G0..G3, G33
+      like.start = point(), like.end = point(), like.centre = point();
+      like.applicate = pick(rng) % 3;
+      like.turns = pick(rng) % 3;
+      if (pick(rng) == 0) like.tool_offset = point();
+      like.frame = pick(rng) < 8 ? core::BlockFrame() : affineOf(f);
+      like.has_tip = pick(rng) == 0;
+      like.tip = point();
+      like.feed = value(), like.has_feed = pick(rng) < 7, like.lead_change = value();
+      geom::Element e;
+      e.arc = pick(rng) < 4;
+      e.p0 = {value(), value()}, e.p1 = {value(), value()}, e.c = {value(), value()};
+      e.ccw = pick(rng) < 5;
+      e.turns = pick(rng) % 2;
+      const auto tip = static_cast<std::uint8_t>(like.has_tip ? pick(rng) % 4 : core::kTipNone);
+      element.element(like, e, tip);
+      motion.motion(generalOnly(core::withGeometry(like, core::planeGeometry(like, e, tip))));
+    }
+    ASSERT_EQ(fast.segments.size(), general.segments.size());
+    for (size_t i = 0; i < fast.segments.size(); ++i)
+      expectSame(fast.segments[i], general.segments[i]);
+  }
+}
+
+// motion()'s fast path (MCS, no frame, no P - S) against its general path, Placement::toSegment:
+// 20,000 random blocks, lines and arcs, tool offsets that change, frames, WCS, -0.
+TEST(Placement, MotionAsTheGeneralPath) {
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> any(-500, 500);
+  std::uniform_int_distribution<int> pick(0, 9);
+  const auto value = [&] { return pick(rng) < 2 ? (pick(rng) < 5 ? 0.0 : -0.0) : any(rng); };
+  const auto point = [&] { return Vec3{value(), value(), value()}; };
+  Frame f;
+  f.fine = {0, -5, 7};
+  f.rotation = {45, 0, 0};
+  for (CoordSystem cs : {CoordSystem::MCS, CoordSystem::WCS}) {
+    Collect fast, general;
+    Placement a(fast, cs), b(general, cs);
+    MotionBlock m;
+    for (int i = 0; i < 20000; ++i) {
+      m.line = i;
+      m.motion = static_cast<Motion>(pick(rng) % 5);  // G0..G3, G33
+      m.start = point(), m.end = point(), m.centre = point();
+      m.applicate = pick(rng) % 3;
+      m.turns = pick(rng) % 3;
+      m.trc.mode = pick(rng) < 5 ? core::TrcMode::Off : core::TrcMode::Right;
+      if (pick(rng) == 0) m.tool_offset = point();
+      m.frame = pick(rng) < 8 ? core::BlockFrame() : affineOf(f);
+      m.feed = value(), m.has_feed = pick(rng) < 7, m.lead_change = value();
+      a.motion(m);
+      b.motion(generalOnly(m));
+    }
+    ASSERT_EQ(fast.segments.size(), general.segments.size());
+    for (size_t i = 0; i < fast.segments.size(); ++i)
+      expectSame(fast.segments[i], general.segments[i]);
   }
 }
 
