@@ -146,12 +146,16 @@ class Interpreter final : public lang::Environment {
 
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
-  // X, Y, Z, G0..G3, F, CR= of a plain block, inline; the plain block and the plain line
-  // (plain_line.cpp, docs/performance.md sections 25, 27, 30).
-  bool plainWord(std::string_view name, double value, bool is_int, Motion& motion);
+  // X, Y, Z, G0..G3, G40..G42, F, CR= of a plain block, inline; the plain block and the plain
+  // line (plain_line.cpp, docs/performance.md sections 25, 27, 30, 34).
+  bool plainWord(std::string_view name, double value, bool is_int, Motion& motion,
+                 core::TrcMode& trc);
+  bool plainAxis(int i, double value);
+  bool plainG(double value, bool is_int, Motion& motion, core::TrcMode& trc);
   void executePlainBlock(const lang::Block& b);
   bool plainLine(std::string_view text);  // true: the line's words are collected
   bool scanPlainLine(std::string_view text);
+  bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);
   void finishPlainLine();
   double wordValue(const lang::Stmt& st);
   void letterWord(const lang::Stmt& st);

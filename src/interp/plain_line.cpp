@@ -13,32 +13,51 @@
 
 namespace ncoffset::interp {
 
-// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, F and CR=, as
-// letterWord, gCode and extendedWord collect them, without the call; a G word sets `motion`.
-// False: collectWord takes the word (and raises any alarm).
+// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, G40..G42, F and CR=,
+// as letterWord, gCode and extendedWord collect them, without the call; a G word sets `motion`
+// or `trc` (G group 7, as gCompensation does). False: collectWord takes the word (and raises
+// any alarm).
 NCOFFSET_INLINE_STEP bool Interpreter::plainWord(std::string_view name, double value, bool is_int,
-                                                 Motion& motion) {
+                                                 Motion& motion, core::TrcMode& trc) {
   if (name.size() != 1) {
     if (name != "CR" || words_.cr || vars_.find(name)) return false;
     words_.cr = value;  // the circle radius (extendedWord)
     return true;
   }
   const char c = name[0];
-  if (c >= 'X' && c <= 'Z') {
-    const int i = c - 'X';
-    if (words_.axis[i]) return false;  // programmed twice: collectWord's alarm
-    words_.axis[i] = true;
-    words_.axis_value[i] = value;
-    words_.axis_mode[i] = lang::AxisMode::Default;
+  if (c >= 'X' && c <= 'Z') return plainAxis(c - 'X', value);
+  if (c == 'G') return plainG(value, is_int, motion, trc);
+  if (c == 'F' && value >= 0 && value <= 1e9) {
+    words_.f = value;
     return true;
   }
-  if (c == 'G' && is_int && value >= 0 && value <= 3) {
+  return false;
+}
+
+// An axis word X, Y or Z (axis 0..2) of plainWord; false if the axis was programmed before
+// (collectWord's alarm).
+NCOFFSET_INLINE_STEP bool Interpreter::plainAxis(int i, double value) {
+  if (words_.axis[i]) return false;
+  words_.axis[i] = true;
+  words_.axis_value[i] = value;
+  words_.axis_mode[i] = lang::AxisMode::Default;
+  return true;
+}
+
+// A G word of plainWord: G0..G3 (group 1) or G40..G42 (group 7), as gMotionPlaneFrame and
+// gCompensation set them.
+NCOFFSET_INLINE_STEP bool Interpreter::plainG(double value, bool is_int, Motion& motion,
+                                              core::TrcMode& trc) {
+  if (!is_int) return false;
+  if (value >= 0 && value <= 3) {
     motion = static_cast<Motion>(static_cast<int>(value));  // G0 G1 G2 G3
     words_.motion_word = true;
     return true;
   }
-  if (c == 'F' && value >= 0 && value <= 1e9) {
-    words_.f = value;
+  if (value >= 40 && value <= 42) {
+    trc = value == 40   ? core::TrcMode::Off
+          : value == 41 ? core::TrcMode::Left
+                        : core::TrcMode::Right;
     return true;
   }
   return false;
@@ -50,7 +69,7 @@ void Interpreter::executePlainBlock(const lang::Block& b) {
   flow_.level().defs_allowed = false;
   bool all_plain = true;
   for (const lang::Stmt& st : b.stmts) {
-    if (!plainWord(st.name, st.literal_value, st.literal_int, modal_.motion)) {
+    if (!plainWord(st.name, st.literal_value, st.literal_int, modal_.motion, modal_.trc)) {
       column_ = st.column;  // plainWord raises no alarm: only collectWord needs the column
       all_plain = false;
       collectWord(st);
@@ -64,46 +83,55 @@ void Interpreter::executePlainBlock(const lang::Block& b) {
 
 namespace {
 
-// One word of a plain line at `p` (no blank before it): X, Y, Z, G or F with a number, or CR=
-// with a number, the number of at most kExactDigits digits; its end after the blanks behind
-// it in `next`. Stricter than Parser::simpleWords: what follows a number directly must be the
-// next word's letter, which the next call checks (so "1EX3", "X1=2" and "X1;" fail there);
-// CR=10 must be followed by a blank or the end, as simpleWords requires.
-struct LineWord {
-  std::string_view name;
-  double value = 0;
-  bool is_int = false;
-  const char* next = nullptr;
-};
-
-NCOFFSET_INLINE_STEP bool scanLineWord(const char* p, LineWord& w) {
-  const char c = *p;
-  const char* const word = p;
-  size_t len = 1;
-  if ((c >= 'X' && c <= 'Z') || c == 'G' || c == 'F') {
-    ++p;
-  } else if (c == 'C' && p[1] == 'R' && p[2] == '=') {
-    len = 2;
-    p += 3;
-  } else {
-    return false;
-  }
+// The number of a word of a plain line at `p` (its letter or CR= behind): an optional sign and
+// at most kExactDigits digits with an optional point, by the parser's own scan; `p` is moved
+// behind it. False for anything else (no digits, too many, EX), which the parser then reads.
+NCOFFSET_INLINE_STEP bool scanLineNumber(const char*& p, double& value, bool& is_int) {
   bool negative = false;
   if (*p == '-' || *p == '+') negative = *p++ == '-';
   const lang::DecimalDigits digits = lang::scanDigits(p);
   if (digits.digits == 0 || digits.digits > lang::kExactDigits) return false;
   p = digits.end;
-  if (len == 2 && *p != ' ' && *p != '\t' && *p != '\0') return false;
-  while (*p == ' ' || *p == '\t') ++p;
   const double v = lang::exactValue(digits);
-  w.name = std::string_view(word, len);
-  w.value = negative ? -v : v;
-  w.is_int = !digits.point;
-  w.next = p;
+  value = negative ? -v : v;
+  is_int = !digits.point;
   return true;
 }
 
 }  // namespace
+
+// One word of a plain line at `p` (no blank before it), scanned and collected as plainWord
+// collects it: X, Y, Z, G or F with a number, or CR= with a number; `p` is moved behind the
+// blanks after it. Stricter than Parser::simpleWords: what follows a number directly must be
+// the next word's letter, which the next call checks (so "1EX3", "X1=2" and "X1;" fail there);
+// CR=10 must be followed by a blank or the end, as simpleWords requires.
+NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& motion,
+                                                     core::TrcMode& trc) {
+  const char c = *p;
+  double value = 0;
+  bool is_int = false;
+  if (c >= 'X' && c <= 'Z') {
+    ++p;
+    if (!scanLineNumber(p, value, is_int) || !plainAxis(c - 'X', value)) return false;
+  } else if (c == 'G') {
+    ++p;
+    if (!scanLineNumber(p, value, is_int) || !plainG(value, is_int, motion, trc)) return false;
+  } else if (c == 'F') {
+    ++p;
+    if (!scanLineNumber(p, value, is_int) || !(value >= 0 && value <= 1e9)) return false;
+    words_.f = value;
+  } else if (c == 'C' && p[1] == 'R' && p[2] == '=') {
+    p += 3;
+    if (!scanLineNumber(p, value, is_int)) return false;
+    if (*p != ' ' && *p != '\t' && *p != '\0') return false;
+    if (words_.cr || vars_.find("CR")) return false;
+    words_.cr = value;  // the circle radius (extendedWord)
+  } else {
+    return false;
+  }
+  while (*p == ' ' || *p == '\t') ++p;
+  return true;
+}
 
 // plainLine without the test for lines refused before.
 NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
@@ -117,24 +145,23 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
     p = q;
     while (*p == ' ' || *p == '\t') ++p;
   }
-  LineWord w;
-  if (!scanLineWord(p, w)) return false;  // also an empty line or a comment
+  if (*p == '\0') return false;  // an empty line or a block number alone
   plain_column_ = static_cast<int>(p - base) + 1;
   // Only plainWord's fields now (9 stores): executeBlock clears the rest if the line is not
   // plain after all, the end below if it is.
   const bool was_plain = words_plain_;
   words_.clearPlain();
   Motion motion = modal_.motion;
-  while (plainWord(w.name, w.value, w.is_int, motion)) {
-    p = w.next;
+  core::TrcMode trc = modal_.trc;
+  while (plainLineWord(p, motion, trc)) {
     if (*p == '\0') {
       if (p != base + text.size()) return false;  // a '\0' inside the line
       if (!was_plain) words_.clearExceptPlain();  // after a block of other words
       modal_.motion = motion;
+      modal_.trc = trc;
       flow_.level().defs_allowed = false;
       return true;
     }
-    if (!scanLineWord(p, w)) return false;
   }
   return false;
 }
@@ -142,10 +169,10 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
 // Parser::parseWritten, Parser::simpleWords and executePlainBlock in one pass, for a line whose
 // every word plainWord collects (an optional block number first): the same number scan, the
 // same words in the same order, and finishPlainBlock (by finishPlainLine) under the same
-// conditions. It accepts no line that simpleWords would not (scanLineWord is stricter). False
+// conditions. It accepts no line that simpleWords would not (plainLineWord is stricter). False
 // leaves the line to the parser and executeBlock; words_ then holds what it held with
 // plainWord's fields changed, which executeBlock clears (words_plain_ as before), and the modal
-// motion is as before.
+// motion and compensation are as before.
 bool Interpreter::plainLine(std::string_view text) {
   if (contour_active_ || carrier_.pending || mcall_.active) [[unlikely]]
     return false;
