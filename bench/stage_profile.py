@@ -41,11 +41,13 @@ STAGES = [
     ("reading lines (Interpreter::run, ProgramFlow)",
      [r"ncoffset::interp::Interpreter::run\(", r"ncoffset::interp::ProgramFlow::"]),
     ("parsing (parseBlock)", [r"ncoffset::lang::parseBlock\(", r"ncoffset::lang::Parser::"]),
-    # A line of X, Y, Z, G0..G3, F and CR= alone: scanned and collected in one pass, and its
-    # block end (docs/performance.md section 30).
+    # A line of X, Y, Z, G0..G3, G40..G42, F and CR= alone: scanned and collected in one pass,
+    # and its block end (docs/performance.md sections 30, 34; finishPlainLine is inline in run
+    # since 34, so the block end is owned by name; a plain block of simpleWords ends there too).
     ("plain line (plainLine: parsing, collecting, block end)",
      [r"ncoffset::interp::Interpreter::plainLine\(",
-      r"ncoffset::interp::Interpreter::finishPlainLine\("]),
+      r"ncoffset::interp::Interpreter::finishPlainLine\(",
+      r"ncoffset::interp::Interpreter::finishPlainBlock\("]),
     ("collecting words (executeBlock, collectWord, assign)",
      [r"ncoffset::interp::Interpreter::executeBlock\("]),
     ("block end (finishBlock)", [r"ncoffset::interp::Interpreter::finishBlock\("]),

@@ -152,11 +152,16 @@ class Interpreter final : public lang::Environment {
                  core::TrcMode& trc);
   bool plainAxis(int i, double value);
   bool plainG(double value, bool is_int, Motion& motion, core::TrcMode& trc);
+  bool plainGCode(unsigned long long g, Motion& motion, core::TrcMode& trc);
   void executePlainBlock(const lang::Block& b);
   bool plainLine(std::string_view text);  // true: the line's words are collected
   bool scanPlainLine(std::string_view text);
   bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);
-  void finishPlainLine();
+  void finishPlainLine() {  // inline: once a block, from run()
+    words_plain_ = false;   // until the block is through without an alarm (executeBlock)
+    finishPlainBlock(plain_column_);
+    words_plain_ = true;
+  }
   double wordValue(const lang::Stmt& st);
   void letterWord(const lang::Stmt& st);
   void programWord(char c, const lang::Stmt& st);

@@ -4,12 +4,16 @@
 // scanned, with no statement at all. Each hands whatever it does not know to the general path;
 // tests/interp/fast_path_test.cpp compares them with it.
 
+#include <fmt/format.h>
+
 #include <cstdint>
+#include <new>
 
 #include "core/inline_step.hpp"
 #include "interp/interpreter.hpp"
 #include "lang/line_copy.hpp"
 #include "lang/number_scan.hpp"
+#include "ncoffset/alarm.hpp"
 
 namespace ncoffset::interp {
 
@@ -63,6 +67,19 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainG(double value, bool is_int, Motion&
   return false;
 }
 
+// plainG for a code written as digits alone (the plain line).
+NCOFFSET_INLINE_STEP bool Interpreter::plainGCode(unsigned long long g, Motion& motion,
+                                                  core::TrcMode& trc) {
+  if (g <= 3) {
+    motion = static_cast<Motion>(g);  // G0 G1 G2 G3
+    words_.motion_word = true;
+    return true;
+  }
+  if (g - 40 > 2) return false;
+  trc = static_cast<core::TrcMode>(g - 40);  // G40 Off, G41 Left, G42 Right
+  return true;
+}
+
 // executeBlock for a plain block (words_ already cleared): only address words with a plain
 // number (G1 X10 CR=5), no definition, jump or expression among them.
 void Interpreter::executePlainBlock(const lang::Block& b) {
@@ -114,8 +131,12 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
     ++p;
     if (!scanLineNumber(p, value, is_int) || !plainAxis(c - 'X', value)) return false;
   } else if (c == 'G') {
-    ++p;
-    if (!scanLineNumber(p, value, is_int) || !plainG(value, is_int, motion, trc)) return false;
+    // The code as an integer (plainG's G0..G3 and G40..G42 written without sign and point;
+    // a sign or a point goes to the parser, which reads the same code).
+    const lang::DecimalDigits digits = lang::scanDigits(p + 1);
+    if (digits.point || digits.digits == 0 || digits.digits > lang::kExactDigits) return false;
+    p = digits.end;
+    if (!plainGCode(digits.mantissa, motion, trc)) return false;
   } else if (c == 'F') {
     ++p;
     if (!scanLineNumber(p, value, is_int) || !(value >= 0 && value <= 1e9)) return false;
@@ -129,7 +150,10 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
   } else {
     return false;
   }
-  while (*p == ' ' || *p == '\t') ++p;
+  // The blanks: the usual single one, then a letter (one test), else the loop.
+  if (*p == ' ') ++p;
+  if (*p < 'A') [[unlikely]]
+    while (*p == ' ' || *p == '\t') ++p;
   return true;
 }
 
@@ -173,7 +197,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
 // leaves the line to the parser and executeBlock; words_ then holds what it held with
 // plainWord's fields changed, which executeBlock clears (words_plain_ as before), and the modal
 // motion and compensation are as before.
-bool Interpreter::plainLine(std::string_view text) {
+NCOFFSET_INLINE_STEP bool Interpreter::plainLine(std::string_view text) {
   if (contour_active_ || carrier_.pending || mcall_.active) [[unlikely]]
     return false;
   // A line refused before (a loop's lines: refused once, not on every pass), by the address
@@ -186,10 +210,87 @@ bool Interpreter::plainLine(std::string_view text) {
   return false;
 }
 
-void Interpreter::finishPlainLine() {
-  words_plain_ = false;  // until the block is through without an alarm (executeBlock)
-  finishPlainBlock(plain_column_);
-  words_plain_ = true;
+// The block loop (here, beside the plain line, which it inlines: a call a line costs the saving
+// of six registers).
+void Interpreter::run(LoadedProgram& program, bool init_file) {
+  init_file_ = init_file;
+  ended_ = false;
+  events_ = sink_.wantsEvents();
+  flow_.begin(program);
+  vars_.beginRun();
+  resetCalls();
+  without_motion_ = 0;  // an init file's data blocks do not count against the program
+  run_start_ = executed_;
+  block_budget_ =
+      executed_ + (options_.limits.max_blocks > 0 ? options_.limits.max_blocks
+                                                  : options_.limits.max_blocks_auto_base);
+  if (!init_file) announceAxes();  // the output columns of the additional axes
+  loop_.reset();
+  words_plain_ = false;
+  std::string_view text;
+  const size_t max_len = options_.limits.max_line_length;
+  while (!ended_) {
+    ProgramLevel& lvl = flow_.level();
+    file_ = lvl.program->file_id;
+    const bool more = flow_.nextLine(text, line_pos_);
+    line_ = line_pos_.line;
+    line_text_ = text;
+    column_ = 0;
+    if (lvl.report_file >= 0) [[unlikely]] {  // a built-in cycle: the calling block's line
+      file_ = lvl.report_file;
+      line_ = lvl.report_line;
+      line_text_ = lvl.report_text;
+    }
+    if (!more) {
+      // End of file: a subprogram returns, the main program (or init file) ends.
+      if (flow_.depth() > 1) {
+        returnFromSubprogram();
+        continue;
+      }
+      break;
+    }
+    if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
+    if (++executed_ > block_budget_) [[unlikely]]
+      blockBudgetReached();
+    if (++without_motion_ > options_.limits.max_blocks_without_motion)
+      raise(AlarmNumber::NoMotionLimit,
+            fmt::format("{} blocks executed without any motion (endless loop?); raise "
+                        "--max-blocks-without-motion",
+                        options_.limits.max_blocks_without_motion));
+    if (text.size() > max_len)
+      raise(AlarmNumber::LineTooLong,
+            fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",
+                        text.size(), max_len));
+    if (!text.empty() && text.front() == '%') {  // archive header %_N_NAME_MPF
+      // A fed text archive (docs/architecture.md "Streaming"): the program ends before the
+      // next program's header, as its range ends when the whole archive is loaded.
+      if (lvl.program->source->fed() && line_pos_.offset > 0) [[unlikely]] {
+        if (flow_.depth() > 1) {
+          returnFromSubprogram();
+          continue;
+        }
+        break;
+      }
+      continue;
+    }
+    if (!macros_.empty()) [[unlikely]]
+      if (macros_.expand(text, expanded_, max_len)) text = expanded_;
+    const bool plain = plainLine(text);  // X Y Z G0..G3 F CR= alone: no parse (plain_line.cpp)
+    if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
+    try {
+      plain ? finishPlainLine() : executeBlock();
+      if (line_pos_.offset == section_end_) [[unlikely]]
+        endSection();  // CALL .. BLOCK .. TO ..
+    } catch (const std::bad_alloc&) {
+      raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
+    }
+  }
+  if (!init_file) {
+    motion_.flush();  // the last compensated element ends on its normal
+  }
+  vars_.endRun(!init_file);
+  if (!init_file) macros_.endRun();
+  flow_.clear();
 }
 
 }  // namespace ncoffset::interp
