@@ -144,6 +144,8 @@ class Interpreter final : public lang::Environment {
   void assign(const lang::Stmt& st);
   void store(const lang::Node& target, const lang::Value& v);
 
+  void startRun(LoadedProgram& program, bool init_file);  // run()'s state (plain_line.cpp)
+
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
   // X, Y, Z, G0..G3, G40..G42, F, CR= of a plain block, inline; the plain block and the plain
@@ -154,8 +156,9 @@ class Interpreter final : public lang::Environment {
   bool plainG(double value, bool is_int, Motion& motion, core::TrcMode& trc);
   bool plainGCode(unsigned long long g, Motion& motion, core::TrcMode& trc);
   void executePlainBlock(const lang::Block& b);
-  bool plainLine(std::string_view text);  // true: the line's words are collected
-  bool scanPlainLine(std::string_view text);
+  // True: the line's words are collected. `ended`: the character after `text` may be read.
+  bool plainLine(std::string_view text, bool ended);
+  bool scanPlainLine(std::string_view text, bool ended);
   bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);
   void finishPlainLine() {  // inline: once a block, from run()
     words_plain_ = false;   // until the block is through without an alarm (executeBlock)

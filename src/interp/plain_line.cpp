@@ -144,7 +144,9 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
   } else if (c == 'C' && p[1] == 'R' && p[2] == '=') {
     p += 3;
     if (!scanLineNumber(p, value, is_int)) return false;
-    if (*p != ' ' && *p != '\t' && *p != '\0') return false;
+    // A blank or the end must follow (any other character up to the blank ends no word, so
+    // the next word's scan refuses it).
+    if (static_cast<unsigned char>(*p) > ' ') return false;
     if (words_.cr || vars_.find("CR")) return false;
     words_.cr = value;  // the circle radius (extendedWord)
   } else {
@@ -157,9 +159,12 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
   return true;
 }
 
-// plainLine without the test for lines refused before.
-NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
-  const char* const base = lang::copyWritten(text, line_copy_);
+// plainLine without the test for lines refused before. The line is scanned where it stands
+// when the character after it may be read (a newline, or the '\0' of a macro expansion: no
+// digit, sign, blank or letter, so every scan stops there), else in a copy ended by a '\0'.
+NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text, bool ended) {
+  const char* const base = ended ? text.data() : lang::copyWritten(text, line_copy_);
+  const char* const end = base + text.size();
   const char* p = base;
   while (*p == ' ' || *p == '\t') ++p;
   if (*p == 'N' && lang::isDigit(p[1])) {  // the block number (more than 18 digits: alarm)
@@ -169,7 +174,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
     p = q;
     while (*p == ' ' || *p == '\t') ++p;
   }
-  if (*p == '\0') return false;  // an empty line or a block number alone
+  if (p == end) return false;  // an empty line or a block number alone
   plain_column_ = static_cast<int>(p - base) + 1;
   // Only plainWord's fields now (9 stores): executeBlock clears the rest if the line is not
   // plain after all, the end below if it is.
@@ -177,9 +182,10 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
   words_.clearPlain();
   Motion motion = modal_.motion;
   core::TrcMode trc = modal_.trc;
+  // A word stops at the line's end or before the next word (a '\0' or CR inside the line is
+  // neither: the next word's scan refuses it).
   while (plainLineWord(p, motion, trc)) {
-    if (*p == '\0') {
-      if (p != base + text.size()) return false;  // a '\0' inside the line
+    if (p == end) {
       if (!was_plain) words_.clearExceptPlain();  // after a block of other words
       modal_.motion = motion;
       modal_.trc = trc;
@@ -197,7 +203,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
 // leaves the line to the parser and executeBlock; words_ then holds what it held with
 // plainWord's fields changed, which executeBlock clears (words_plain_ as before), and the modal
 // motion and compensation are as before.
-NCOFFSET_INLINE_STEP bool Interpreter::plainLine(std::string_view text) {
+NCOFFSET_INLINE_STEP bool Interpreter::plainLine(std::string_view text, bool ended) {
   if (contour_active_ || carrier_.pending || mcall_.active) [[unlikely]]
     return false;
   // A line refused before (a loop's lines: refused once, not on every pass), by the address
@@ -205,14 +211,15 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLine(std::string_view text) {
   // path, which is never wrong.
   const char*& refused = refused_[(reinterpret_cast<std::uintptr_t>(text.data()) >> 4) % 32];
   if (refused == text.data()) return false;
-  if (scanPlainLine(text)) return true;
+  if (scanPlainLine(text, ended)) return true;
   refused = text.data();
   return false;
 }
 
 // The block loop (here, beside the plain line, which it inlines: a call a line costs the saving
 // of six registers).
-void Interpreter::run(LoadedProgram& program, bool init_file) {
+// The state a run starts from.
+void Interpreter::startRun(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
   ended_ = false;
   events_ = sink_.wantsEvents();
@@ -227,6 +234,10 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
   words_plain_ = false;
+}
+
+void Interpreter::run(LoadedProgram& program, bool init_file) {
+  startRun(program, init_file);
   std::string_view text;
   const size_t max_len = options_.limits.max_line_length;
   while (!ended_) {
@@ -275,7 +286,10 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     }
     if (!macros_.empty()) [[unlikely]]
       if (macros_.expand(text, expanded_, max_len)) text = expanded_;
-    const bool plain = plainLine(text);  // X Y Z G0..G3 F CR= alone: no parse (plain_line.cpp)
+    // X Y Z G0..G3 G40..G42 F CR= alone: no parse. Behind the line a newline, or the '\0' of
+    // an expansion, may be read.
+    const bool plain = plainLine(
+        text, lvl.pos.offset - line_pos_.offset > text.size() || text.data() == expanded_.data());
     if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
       plain ? finishPlainLine() : executeBlock();
@@ -285,9 +299,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
       raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
     }
   }
-  if (!init_file) {
-    motion_.flush();  // the last compensated element ends on its normal
-  }
+  if (!init_file) motion_.flush();  // the last compensated element ends on its normal
   vars_.endRun(!init_file);
   if (!init_file) macros_.endRun();
   flow_.clear();

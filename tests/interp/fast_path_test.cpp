@@ -10,6 +10,7 @@
 // simpleWords, a third way compared too.
 #include <gtest/gtest.h>
 
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -204,6 +205,31 @@ TEST(FrontFastPath, CompensatedContourAsTheGeneralPath) {
   const Outcome o = three.compare();
   EXPECT_FALSE(o.alarm.has_value());
   EXPECT_EQ(o.segments.size(), 72u);  // the moves of the three passes, as both paths make them
+}
+
+// The plain line is scanned where it stands when a newline follows it, in a copy otherwise (the
+// last line of a text without its newline): CR LF, a CR left inside the line (CR CR LF) and a
+// last line ending in CR=, all as the general path.
+TEST(FrontFastPath, LineEndsAsTheGeneralPath) {
+  const char* const lines[] = {"G1 X10 Y0 F100",   "G2 X0 Y10 CR=10", "G1 Y50",
+                               "G3 X10 Y60 CR=10", "G1 X40 CR=3",     "G2 X50 Y50 CR=10"};
+  for (const char* eol : {"\n", "\r\n", "\r\r\n", "\r"}) {
+    SCOPED_TRACE(::testing::PrintToString(std::string(eol)));
+    std::string fast = "G0 X0 Y0 Z0\n", general = fast;
+    for (const char* line : lines) {
+      const bool last = line == lines[std::size(lines) - 1];
+      fast += std::string(line) + (last ? "" : eol);
+      general += std::string(line) + " S=(0)" + (last ? "" : eol);
+    }
+    const Outcome o = expectSame(fast, general);
+    // G1 .. CR=3 ends each program with the circle alarm after four moves (the alarm's column
+    // compared above); a CR inside a line is no character of a block (an alarm at once), and a
+    // CR alone ends no line.
+    const bool clean =
+        std::string(eol).find("\r\r") == std::string::npos && std::string(eol) != "\r";
+    EXPECT_TRUE(o.alarm.has_value());
+    EXPECT_EQ(o.segments.size(), clean ? 4u : 0u);
+  }
 }
 
 }  // namespace
