@@ -179,7 +179,7 @@ class Interpreter final : public lang::Environment {
   void gNotModelled(int g);
   void setSar(core::SarKind kind);
   void finishBlock();
-  void finishPlainBlock(int column);  // finishBlock for plainWord's words (block_executor.cpp)
+  void finishPlainBlock(int column);  // finishBlock for plainWord's words (plain_line.cpp)
   bool blockFrames();  // the frame words of the block; true when they took its axis values
   void doFrameCommand();
   double toMm(double v) const;

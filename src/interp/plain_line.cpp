@@ -80,6 +80,27 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainGCode(unsigned long long g, Motion& 
   return true;
 }
 
+// finishBlock (block_executor.cpp) for a block whose words plainWord collected alone (X, Y, Z,
+// G0..G3, F, CR=), outside a contour definition, a carrier change and a modal call (executeBlock):
+// every word the other steps look for is absent, so the feed, the motion and the bookkeeping
+// remain, in finishBlock's order. finishBlock is its twin (tests/interp/fast_path_test.cpp).
+NCOFFSET_INLINE_STEP void Interpreter::finishPlainBlock(int column) {
+  column_ = column;  // of the block's first word
+  feed_before_ = modal_.feed;
+  if (words_.f) modal_.feed = modal_.units == Units::G700 ? *words_.f * 25.4 : *words_.f;
+  if (events_) blockEvents(feed_before_);
+  const bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
+  if (words_.cr && !is_arc) [[unlikely]]
+    threadLeadWords();  // CR= without G2/G3: the circle alarm
+  bool moved = false;
+  if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
+    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+  if (moved) without_motion_ = 0;
+  if (events_ && stop_after_) stopEvent();
+  if (!moved) motion_.output().blockWithoutMotion();
+  motion_before_ = modal_.motion;
+}
+
 // executeBlock for a plain block (words_ already cleared): only address words with a plain
 // number (G1 X10 CR=5), no definition, jump or expression among them.
 void Interpreter::executePlainBlock(const lang::Block& b) {
@@ -166,15 +187,17 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text, bool
   const char* const base = ended ? text.data() : lang::copyWritten(text, line_copy_);
   const char* const end = base + text.size();
   const char* p = base;
-  while (*p == ' ' || *p == '\t') ++p;
-  if (*p == 'N' && lang::isDigit(p[1])) {  // the block number (more than 18 digits: alarm)
-    const char* q = p + 1;
-    while (lang::isDigit(*q)) ++q;
-    if (q - p - 1 > 18) return false;
-    p = q;
+  if (*p < 'A' || *p == 'N') [[unlikely]] {  // else a word's letter (the usual line), not the end
     while (*p == ' ' || *p == '\t') ++p;
+    if (*p == 'N' && lang::isDigit(p[1])) {  // the block number (more than 18 digits: alarm)
+      const char* q = p + 1;
+      while (lang::isDigit(*q)) ++q;
+      if (q - p - 1 > 18) return false;
+      p = q;
+      while (*p == ' ' || *p == '\t') ++p;
+    }
+    if (p == end) return false;  // an empty line or a block number alone
   }
-  if (p == end) return false;  // an empty line or a block number alone
   plain_column_ = static_cast<int>(p - base) + 1;
   // Only plainWord's fields now (9 stores): executeBlock clears the rest if the line is not
   // plain after all, the end below if it is.
@@ -284,12 +307,14 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
       }
       continue;
     }
-    if (!macros_.empty()) [[unlikely]]
-      if (macros_.expand(text, expanded_, max_len)) text = expanded_;
     // X Y Z G0..G3 G40..G42 F CR= alone: no parse. Behind the line a newline, or the '\0' of
-    // an expansion, may be read.
-    const bool plain = plainLine(
-        text, lvl.pos.offset - line_pos_.offset > text.size() || text.data() == expanded_.data());
+    // an expansion, may be read (`ended`).
+    bool ended = lvl.pos.offset - line_pos_.offset > text.size();
+    if (!macros_.empty() && macros_.expand(text, expanded_, max_len)) [[unlikely]] {
+      text = expanded_;
+      ended = true;
+    }
+    const bool plain = plainLine(text, ended);
     if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
       plain ? finishPlainLine() : executeBlock();
