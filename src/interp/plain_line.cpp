@@ -173,10 +173,14 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
   } else {
     return false;
   }
-  // The blanks: the usual single one, then a letter (one test), else the loop.
-  if (*p == ' ') ++p;
-  if (*p < 'A') [[unlikely]]
+  // The blanks: the usual single one and a letter behind it (two tests), else the loop; at the
+  // line's end no blank (two tests).
+  if (*p == ' ') {
+    if (*++p < 'A') [[unlikely]]
+      while (*p == ' ' || *p == '\t') ++p;
+  } else if (*p == '\t') [[unlikely]] {
     while (*p == ' ' || *p == '\t') ++p;
+  }
   return true;
 }
 
