@@ -38,14 +38,15 @@ STAGES = [
     ("process start-up, CLI, exit", [r"main$", r"_GLOBAL__sub_I", r"ncoffset::cli::"]),
     ("file mapping (SourceFile)", [r"ncoffset::lang::SourceFile::"]),
     ("pre-scan (ProgramIndex)", [r"ncoffset::lang::ProgramIndex::"]),
-    ("reading lines (Interpreter::run, ProgramFlow)",
-     [r"ncoffset::interp::Interpreter::run\(", r"ncoffset::interp::ProgramFlow::"]),
+    # The block loop reads each line and, since docs/performance.md section 34, scans, collects
+    # and ends a plain line (X, Y, Z, G0..G3, G40..G42, F, CR= alone) inline: plainLine and
+    # finishPlainBlock are no functions of their own any more (section 30 had them as a stage
+    # "plain line"). The other lines are parsed, collected and ended in the stages below.
+    ("reading lines and plain lines (Interpreter::run)",
+     [r"ncoffset::interp::Interpreter::run\(", r"ncoffset::interp::ProgramFlow::",
+      r"ncoffset::interp::Interpreter::plainLine\(",
+      r"ncoffset::interp::Interpreter::finishPlainBlock\("]),
     ("parsing (parseBlock)", [r"ncoffset::lang::parseBlock\(", r"ncoffset::lang::Parser::"]),
-    # A line of X, Y, Z, G0..G3, F and CR= alone: scanned and collected in one pass, and its
-    # block end (docs/performance.md section 30).
-    ("plain line (plainLine: parsing, collecting, block end)",
-     [r"ncoffset::interp::Interpreter::plainLine\(",
-      r"ncoffset::interp::Interpreter::finishPlainLine\("]),
     ("collecting words (executeBlock, collectWord, assign)",
      [r"ncoffset::interp::Interpreter::executeBlock\("]),
     ("block end (finishBlock)", [r"ncoffset::interp::Interpreter::finishBlock\("]),

@@ -115,27 +115,6 @@ void Interpreter::finishBlock() {
   }
 }
 
-// finishBlock for a block whose words plainWord collected alone (X, Y, Z, G0..G3, F, CR=),
-// outside a contour definition, a carrier change and a modal call (executeBlock): every word
-// the other steps look for is absent, so the feed, the motion and the bookkeeping remain, in
-// finishBlock's order. finishBlock is its twin (tests/interp/fast_path_test.cpp).
-void Interpreter::finishPlainBlock(int column) {
-  column_ = column;  // of the block's first word
-  feed_before_ = modal_.feed;
-  if (words_.f) modal_.feed = modal_.units == Units::G700 ? *words_.f * 25.4 : *words_.f;
-  if (events_) blockEvents(feed_before_);
-  const bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
-  if (words_.cr && !is_arc) [[unlikely]]
-    threadLeadWords();  // CR= without G2/G3: the circle alarm
-  bool moved = false;
-  if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
-    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
-  if (moved) without_motion_ = 0;
-  if (events_ && stop_after_) stopEvent();
-  if (!moved) motion_.output().blockWithoutMotion();
-  motion_before_ = modal_.motion;
-}
-
 void Interpreter::doFrameCommand() {
   Frame& pf = frames_.programmable();
   const std::string_view cmd = words_.frame_command;

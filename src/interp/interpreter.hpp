@@ -144,15 +144,27 @@ class Interpreter final : public lang::Environment {
   void assign(const lang::Stmt& st);
   void store(const lang::Node& target, const lang::Value& v);
 
+  void startRun(LoadedProgram& program, bool init_file);  // run()'s state (plain_line.cpp)
+
   // --- words, modal state, motion (block_executor.cpp) ---
   void collectWord(const lang::Stmt& st);
-  // X, Y, Z, G0..G3, F, CR= of a plain block, inline; the plain block and the plain line
-  // (plain_line.cpp, docs/performance.md sections 25, 27, 30).
-  bool plainWord(std::string_view name, double value, bool is_int, Motion& motion);
+  // X, Y, Z, G0..G3, G40..G42, F, CR= of a plain block, inline; the plain block and the plain
+  // line (plain_line.cpp, docs/performance.md sections 25, 27, 30, 34).
+  bool plainWord(std::string_view name, double value, bool is_int, Motion& motion,
+                 core::TrcMode& trc);
+  bool plainAxis(int i, double value);
+  bool plainG(double value, bool is_int, Motion& motion, core::TrcMode& trc);
+  bool plainGCode(unsigned long long g, Motion& motion, core::TrcMode& trc);
   void executePlainBlock(const lang::Block& b);
-  bool plainLine(std::string_view text);  // true: the line's words are collected
-  bool scanPlainLine(std::string_view text);
-  void finishPlainLine();
+  // True: the line's words are collected. `ended`: the character after `text` may be read.
+  bool plainLine(std::string_view text, bool ended);
+  bool scanPlainLine(std::string_view text, bool ended);
+  bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);
+  void finishPlainLine() {  // inline: once a block, from run()
+    words_plain_ = false;   // until the block is through without an alarm (executeBlock)
+    finishPlainBlock(plain_column_);
+    words_plain_ = true;
+  }
   double wordValue(const lang::Stmt& st);
   void letterWord(const lang::Stmt& st);
   void programWord(char c, const lang::Stmt& st);
@@ -167,7 +179,7 @@ class Interpreter final : public lang::Environment {
   void gNotModelled(int g);
   void setSar(core::SarKind kind);
   void finishBlock();
-  void finishPlainBlock(int column);  // finishBlock for plainWord's words (block_executor.cpp)
+  void finishPlainBlock(int column);  // finishBlock for plainWord's words (plain_line.cpp)
   bool blockFrames();  // the frame words of the block; true when they took its axis values
   void doFrameCommand();
   double toMm(double v) const;

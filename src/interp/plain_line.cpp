@@ -4,44 +4,101 @@
 // scanned, with no statement at all. Each hands whatever it does not know to the general path;
 // tests/interp/fast_path_test.cpp compares them with it.
 
+#include <fmt/format.h>
+
 #include <cstdint>
+#include <new>
 
 #include "core/inline_step.hpp"
 #include "interp/interpreter.hpp"
 #include "lang/line_copy.hpp"
 #include "lang/number_scan.hpp"
+#include "ncoffset/alarm.hpp"
 
 namespace ncoffset::interp {
 
-// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, F and CR=, as
-// letterWord, gCode and extendedWord collect them, without the call; a G word sets `motion`.
-// False: collectWord takes the word (and raises any alarm).
+// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, G40..G42, F and CR=,
+// as letterWord, gCode and extendedWord collect them, without the call; a G word sets `motion`
+// or `trc` (G group 7, as gCompensation does). False: collectWord takes the word (and raises
+// any alarm).
 NCOFFSET_INLINE_STEP bool Interpreter::plainWord(std::string_view name, double value, bool is_int,
-                                                 Motion& motion) {
+                                                 Motion& motion, core::TrcMode& trc) {
   if (name.size() != 1) {
     if (name != "CR" || words_.cr || vars_.find(name)) return false;
     words_.cr = value;  // the circle radius (extendedWord)
     return true;
   }
   const char c = name[0];
-  if (c >= 'X' && c <= 'Z') {
-    const int i = c - 'X';
-    if (words_.axis[i]) return false;  // programmed twice: collectWord's alarm
-    words_.axis[i] = true;
-    words_.axis_value[i] = value;
-    words_.axis_mode[i] = lang::AxisMode::Default;
-    return true;
-  }
-  if (c == 'G' && is_int && value >= 0 && value <= 3) {
-    motion = static_cast<Motion>(static_cast<int>(value));  // G0 G1 G2 G3
-    words_.motion_word = true;
-    return true;
-  }
+  if (c >= 'X' && c <= 'Z') return plainAxis(c - 'X', value);
+  if (c == 'G') return plainG(value, is_int, motion, trc);
   if (c == 'F' && value >= 0 && value <= 1e9) {
     words_.f = value;
     return true;
   }
   return false;
+}
+
+// An axis word X, Y or Z (axis 0..2) of plainWord; false if the axis was programmed before
+// (collectWord's alarm).
+NCOFFSET_INLINE_STEP bool Interpreter::plainAxis(int i, double value) {
+  if (words_.axis[i]) return false;
+  words_.axis[i] = true;
+  words_.axis_value[i] = value;
+  words_.axis_mode[i] = lang::AxisMode::Default;
+  return true;
+}
+
+// A G word of plainWord: G0..G3 (group 1) or G40..G42 (group 7), as gMotionPlaneFrame and
+// gCompensation set them.
+NCOFFSET_INLINE_STEP bool Interpreter::plainG(double value, bool is_int, Motion& motion,
+                                              core::TrcMode& trc) {
+  if (!is_int) return false;
+  if (value >= 0 && value <= 3) {
+    motion = static_cast<Motion>(static_cast<int>(value));  // G0 G1 G2 G3
+    words_.motion_word = true;
+    return true;
+  }
+  if (value >= 40 && value <= 42) {
+    trc = value == 40   ? core::TrcMode::Off
+          : value == 41 ? core::TrcMode::Left
+                        : core::TrcMode::Right;
+    return true;
+  }
+  return false;
+}
+
+// plainG for a code written as digits alone (the plain line).
+NCOFFSET_INLINE_STEP bool Interpreter::plainGCode(unsigned long long g, Motion& motion,
+                                                  core::TrcMode& trc) {
+  if (g <= 3) {
+    motion = static_cast<Motion>(g);  // G0 G1 G2 G3
+    words_.motion_word = true;
+    return true;
+  }
+  if (g - 40 > 2) return false;
+  trc = static_cast<core::TrcMode>(g - 40);  // G40 Off, G41 Left, G42 Right
+  return true;
+}
+
+// finishBlock (block_executor.cpp) for a block whose words plainWord collected alone (X, Y, Z,
+// G0..G3, F, CR=), outside a contour definition, a carrier change and a modal call (executeBlock):
+// every word the other steps look for is absent, so the feed, the motion and the bookkeeping
+// remain, in finishBlock's order. finishBlock is its twin (tests/interp/fast_path_test.cpp).
+NCOFFSET_INLINE_STEP void Interpreter::finishPlainBlock(int column) {
+  column_ = column;  // of the block's first word
+  feed_before_ = modal_.feed;
+  if (words_.f) modal_.feed = modal_.units == Units::G700 ? *words_.f * 25.4 : *words_.f;
+  if (events_) blockEvents(feed_before_);
+  const bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
+  if (words_.cr && !is_arc) [[unlikely]]
+    threadLeadWords();  // CR= without G2/G3: the circle alarm
+  bool moved = false;
+  if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
+    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+  if (moved) without_motion_ = 0;
+  if (events_ && stop_after_) stopEvent();
+  if (!moved) motion_.output().blockWithoutMotion();
+  motion_before_ = modal_.motion;
 }
 
 // executeBlock for a plain block (words_ already cleared): only address words with a plain
@@ -50,7 +107,7 @@ void Interpreter::executePlainBlock(const lang::Block& b) {
   flow_.level().defs_allowed = false;
   bool all_plain = true;
   for (const lang::Stmt& st : b.stmts) {
-    if (!plainWord(st.name, st.literal_value, st.literal_int, modal_.motion)) {
+    if (!plainWord(st.name, st.literal_value, st.literal_int, modal_.motion, modal_.trc)) {
       column_ = st.column;  // plainWord raises no alarm: only collectWord needs the column
       all_plain = false;
       collectWord(st);
@@ -64,77 +121,104 @@ void Interpreter::executePlainBlock(const lang::Block& b) {
 
 namespace {
 
-// One word of a plain line at `p` (no blank before it): X, Y, Z, G or F with a number, or CR=
-// with a number, the number of at most kExactDigits digits; its end after the blanks behind
-// it in `next`. Stricter than Parser::simpleWords: what follows a number directly must be the
-// next word's letter, which the next call checks (so "1EX3", "X1=2" and "X1;" fail there);
-// CR=10 must be followed by a blank or the end, as simpleWords requires.
-struct LineWord {
-  std::string_view name;
-  double value = 0;
-  bool is_int = false;
-  const char* next = nullptr;
-};
-
-NCOFFSET_INLINE_STEP bool scanLineWord(const char* p, LineWord& w) {
-  const char c = *p;
-  const char* const word = p;
-  size_t len = 1;
-  if ((c >= 'X' && c <= 'Z') || c == 'G' || c == 'F') {
-    ++p;
-  } else if (c == 'C' && p[1] == 'R' && p[2] == '=') {
-    len = 2;
-    p += 3;
-  } else {
-    return false;
-  }
+// The number of a word of a plain line at `p` (its letter or CR= behind): an optional sign and
+// at most kExactDigits digits with an optional point, by the parser's own scan; `p` is moved
+// behind it. False for anything else (no digits, too many, EX), which the parser then reads.
+NCOFFSET_INLINE_STEP bool scanLineNumber(const char*& p, double& value, bool& is_int) {
   bool negative = false;
   if (*p == '-' || *p == '+') negative = *p++ == '-';
   const lang::DecimalDigits digits = lang::scanDigits(p);
   if (digits.digits == 0 || digits.digits > lang::kExactDigits) return false;
   p = digits.end;
-  if (len == 2 && *p != ' ' && *p != '\t' && *p != '\0') return false;
-  while (*p == ' ' || *p == '\t') ++p;
   const double v = lang::exactValue(digits);
-  w.name = std::string_view(word, len);
-  w.value = negative ? -v : v;
-  w.is_int = !digits.point;
-  w.next = p;
+  value = negative ? -v : v;
+  is_int = !digits.point;
   return true;
 }
 
 }  // namespace
 
-// plainLine without the test for lines refused before.
-NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
-  const char* const base = lang::copyWritten(text, line_copy_);
-  const char* p = base;
-  while (*p == ' ' || *p == '\t') ++p;
-  if (*p == 'N' && lang::isDigit(p[1])) {  // the block number (more than 18 digits: alarm)
-    const char* q = p + 1;
-    while (lang::isDigit(*q)) ++q;
-    if (q - p - 1 > 18) return false;
-    p = q;
+// One word of a plain line at `p` (no blank before it), scanned and collected as plainWord
+// collects it: X, Y, Z, G or F with a number, or CR= with a number; `p` is moved behind the
+// blanks after it. Stricter than Parser::simpleWords: what follows a number directly must be
+// the next word's letter, which the next call checks (so "1EX3", "X1=2" and "X1;" fail there);
+// CR=10 must be followed by a blank or the end, as simpleWords requires.
+NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& motion,
+                                                     core::TrcMode& trc) {
+  const char c = *p;
+  double value = 0;
+  bool is_int = false;
+  if (c >= 'X' && c <= 'Z') {
+    ++p;
+    if (!scanLineNumber(p, value, is_int) || !plainAxis(c - 'X', value)) return false;
+  } else if (c == 'G') {
+    // The code as an integer (plainG's G0..G3 and G40..G42 written without sign and point;
+    // a sign or a point goes to the parser, which reads the same code).
+    const lang::DecimalDigits digits = lang::scanDigits(p + 1);
+    if (digits.point || digits.digits == 0 || digits.digits > lang::kExactDigits) return false;
+    p = digits.end;
+    if (!plainGCode(digits.mantissa, motion, trc)) return false;
+  } else if (c == 'F') {
+    ++p;
+    if (!scanLineNumber(p, value, is_int) || !(value >= 0 && value <= 1e9)) return false;
+    words_.f = value;
+  } else if (c == 'C' && p[1] == 'R' && p[2] == '=') {
+    p += 3;
+    if (!scanLineNumber(p, value, is_int)) return false;
+    // A blank or the end must follow (any other character up to the blank ends no word, so
+    // the next word's scan refuses it).
+    if (static_cast<unsigned char>(*p) > ' ') return false;
+    if (words_.cr || vars_.find("CR")) return false;
+    words_.cr = value;  // the circle radius (extendedWord)
+  } else {
+    return false;
+  }
+  // The blanks: the usual single one and a letter behind it (two tests), else the loop; at the
+  // line's end no blank (two tests).
+  if (*p == ' ') {
+    if (*++p < 'A') [[unlikely]]
+      while (*p == ' ' || *p == '\t') ++p;
+  } else if (*p == '\t') [[unlikely]] {
     while (*p == ' ' || *p == '\t') ++p;
   }
-  LineWord w;
-  if (!scanLineWord(p, w)) return false;  // also an empty line or a comment
+  return true;
+}
+
+// plainLine without the test for lines refused before. The line is scanned where it stands
+// when the character after it may be read (a newline, or the '\0' of a macro expansion: no
+// digit, sign, blank or letter, so every scan stops there), else in a copy ended by a '\0'.
+NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text, bool ended) {
+  const char* const base = ended ? text.data() : lang::copyWritten(text, line_copy_);
+  const char* const end = base + text.size();
+  const char* p = base;
+  if (*p < 'A' || *p == 'N') [[unlikely]] {  // else a word's letter (the usual line), not the end
+    while (*p == ' ' || *p == '\t') ++p;
+    if (*p == 'N' && lang::isDigit(p[1])) {  // the block number (more than 18 digits: alarm)
+      const char* q = p + 1;
+      while (lang::isDigit(*q)) ++q;
+      if (q - p - 1 > 18) return false;
+      p = q;
+      while (*p == ' ' || *p == '\t') ++p;
+    }
+    if (p == end) return false;  // an empty line or a block number alone
+  }
   plain_column_ = static_cast<int>(p - base) + 1;
   // Only plainWord's fields now (9 stores): executeBlock clears the rest if the line is not
   // plain after all, the end below if it is.
   const bool was_plain = words_plain_;
   words_.clearPlain();
   Motion motion = modal_.motion;
-  while (plainWord(w.name, w.value, w.is_int, motion)) {
-    p = w.next;
-    if (*p == '\0') {
-      if (p != base + text.size()) return false;  // a '\0' inside the line
+  core::TrcMode trc = modal_.trc;
+  // A word stops at the line's end or before the next word (a '\0' or CR inside the line is
+  // neither: the next word's scan refuses it).
+  while (plainLineWord(p, motion, trc)) {
+    if (p == end) {
       if (!was_plain) words_.clearExceptPlain();  // after a block of other words
       modal_.motion = motion;
+      modal_.trc = trc;
       flow_.level().defs_allowed = false;
       return true;
     }
-    if (!scanLineWord(p, w)) return false;
   }
   return false;
 }
@@ -142,11 +226,11 @@ NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text) {
 // Parser::parseWritten, Parser::simpleWords and executePlainBlock in one pass, for a line whose
 // every word plainWord collects (an optional block number first): the same number scan, the
 // same words in the same order, and finishPlainBlock (by finishPlainLine) under the same
-// conditions. It accepts no line that simpleWords would not (scanLineWord is stricter). False
+// conditions. It accepts no line that simpleWords would not (plainLineWord is stricter). False
 // leaves the line to the parser and executeBlock; words_ then holds what it held with
 // plainWord's fields changed, which executeBlock clears (words_plain_ as before), and the modal
-// motion is as before.
-bool Interpreter::plainLine(std::string_view text) {
+// motion and compensation are as before.
+NCOFFSET_INLINE_STEP bool Interpreter::plainLine(std::string_view text, bool ended) {
   if (contour_active_ || carrier_.pending || mcall_.active) [[unlikely]]
     return false;
   // A line refused before (a loop's lines: refused once, not on every pass), by the address
@@ -154,15 +238,100 @@ bool Interpreter::plainLine(std::string_view text) {
   // path, which is never wrong.
   const char*& refused = refused_[(reinterpret_cast<std::uintptr_t>(text.data()) >> 4) % 32];
   if (refused == text.data()) return false;
-  if (scanPlainLine(text)) return true;
+  if (scanPlainLine(text, ended)) return true;
   refused = text.data();
   return false;
 }
 
-void Interpreter::finishPlainLine() {
-  words_plain_ = false;  // until the block is through without an alarm (executeBlock)
-  finishPlainBlock(plain_column_);
-  words_plain_ = true;
+// The block loop (here, beside the plain line, which it inlines: a call a line costs the saving
+// of six registers).
+// The state a run starts from.
+void Interpreter::startRun(LoadedProgram& program, bool init_file) {
+  init_file_ = init_file;
+  ended_ = false;
+  events_ = sink_.wantsEvents();
+  flow_.begin(program);
+  vars_.beginRun();
+  resetCalls();
+  without_motion_ = 0;  // an init file's data blocks do not count against the program
+  run_start_ = executed_;
+  block_budget_ =
+      executed_ + (options_.limits.max_blocks > 0 ? options_.limits.max_blocks
+                                                  : options_.limits.max_blocks_auto_base);
+  if (!init_file) announceAxes();  // the output columns of the additional axes
+  loop_.reset();
+  words_plain_ = false;
+}
+
+void Interpreter::run(LoadedProgram& program, bool init_file) {
+  startRun(program, init_file);
+  std::string_view text;
+  const size_t max_len = options_.limits.max_line_length;
+  while (!ended_) {
+    ProgramLevel& lvl = flow_.level();
+    file_ = lvl.program->file_id;
+    const bool more = flow_.nextLine(text, line_pos_);
+    line_ = line_pos_.line;
+    line_text_ = text;
+    column_ = 0;
+    if (lvl.report_file >= 0) [[unlikely]] {  // a built-in cycle: the calling block's line
+      file_ = lvl.report_file;
+      line_ = lvl.report_line;
+      line_text_ = lvl.report_text;
+    }
+    if (!more) {
+      // End of file: a subprogram returns, the main program (or init file) ends.
+      if (flow_.depth() > 1) {
+        returnFromSubprogram();
+        continue;
+      }
+      break;
+    }
+    if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
+    if (++executed_ > block_budget_) [[unlikely]]
+      blockBudgetReached();
+    if (++without_motion_ > options_.limits.max_blocks_without_motion)
+      raise(AlarmNumber::NoMotionLimit,
+            fmt::format("{} blocks executed without any motion (endless loop?); raise "
+                        "--max-blocks-without-motion",
+                        options_.limits.max_blocks_without_motion));
+    if (text.size() > max_len)
+      raise(AlarmNumber::LineTooLong,
+            fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",
+                        text.size(), max_len));
+    if (!text.empty() && text.front() == '%') {  // archive header %_N_NAME_MPF
+      // A fed text archive (docs/architecture.md "Streaming"): the program ends before the
+      // next program's header, as its range ends when the whole archive is loaded.
+      if (lvl.program->source->fed() && line_pos_.offset > 0) [[unlikely]] {
+        if (flow_.depth() > 1) {
+          returnFromSubprogram();
+          continue;
+        }
+        break;
+      }
+      continue;
+    }
+    // X Y Z G0..G3 G40..G42 F CR= alone: no parse. Behind the line a newline, or the '\0' of
+    // an expansion, may be read (`ended`).
+    bool ended = lvl.pos.offset - line_pos_.offset > text.size();
+    if (!macros_.empty() && macros_.expand(text, expanded_, max_len)) [[unlikely]] {
+      text = expanded_;
+      ended = true;
+    }
+    const bool plain = plainLine(text, ended);
+    if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
+    try {
+      plain ? finishPlainLine() : executeBlock();
+      if (line_pos_.offset == section_end_) [[unlikely]]
+        endSection();  // CALL .. BLOCK .. TO ..
+    } catch (const std::bad_alloc&) {
+      raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
+    }
+  }
+  if (!init_file) motion_.flush();  // the last compensated element ends on its normal
+  vars_.endRun(!init_file);
+  if (!init_file) macros_.endRun();
+  flow_.clear();
 }
 
 }  // namespace ncoffset::interp

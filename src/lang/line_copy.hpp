@@ -15,9 +15,16 @@ inline char* copyWritten(std::string_view text, std::string& buffer) {
   const size_t n = text.size();
   if (buffer.size() < n + 1) buffer.resize(n + 1);
   char* const copy = buffer.data();
-  if (n >= 8 && n <= 16) {  // the usual length: two (overlapping) groups of eight, no call
+  // The usual lengths in two (overlapping) groups, no call.
+  if (n >= 8 && n <= 16) {
     std::memcpy(copy, text.data(), 8);
     std::memcpy(copy + n - 8, text.data() + n - 8, 8);
+  } else if (n > 16 && n <= 32) {
+    std::memcpy(copy, text.data(), 16);
+    std::memcpy(copy + n - 16, text.data() + n - 16, 16);
+  } else if (n >= 4 && n < 8) {
+    std::memcpy(copy, text.data(), 4);
+    std::memcpy(copy + n - 4, text.data() + n - 4, 4);
   } else {
     std::memcpy(copy, text.data(), n);
   }

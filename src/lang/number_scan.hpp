@@ -22,17 +22,28 @@ struct DecimalDigits {
   bool point = false;
 };
 
+// The digits from `p` appended to `mant` (modulo 2^64); `p` is moved behind them. Each digit's
+// value is its character minus '0' taken unsigned, which is below 10 for a digit only: one
+// test a digit, and the value is not computed twice.
+inline unsigned long long appendDigits(const char*& p, unsigned long long mant) {
+  unsigned digit = static_cast<unsigned char>(*p) - unsigned{'0'};
+  while (digit < 10) {
+    mant = mant * 10 + digit;
+    digit = static_cast<unsigned char>(*++p) - unsigned{'0'};
+  }
+  return mant;
+}
+
 // Digits with at most one '.' from `p` (none at all: digits == 0).
 inline DecimalDigits scanDigits(const char* p) {
   DecimalDigits d;
   const char* const begin = p;
-  unsigned long long mant = 0;
-  while (isDigit(*p)) mant = mant * 10 + static_cast<unsigned>(*p++ - '0');
+  unsigned long long mant = appendDigits(p, 0);
   const char* const point = p;
   if (*p == '.') {
     d.point = true;
     ++p;
-    while (isDigit(*p)) mant = mant * 10 + static_cast<unsigned>(*p++ - '0');
+    mant = appendDigits(p, mant);
     d.decimals = static_cast<int>(p - point - 1);
   }
   d.end = p;

@@ -2,7 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "lang/parser.hpp"
 #include "ncoffset/alarm.hpp"
@@ -59,6 +64,74 @@ bool mayHoldHead(std::string_view s) {
   return true;
 }
 
+#if defined(__SSE2__)
+// The newlines of the 16 characters at `s` whose line is not the usual line of mayHoldHead's
+// first test (an upper-case letter other than N, then a digit), as bits; reads s[0..17].
+int unusualLineStarts(const char* s, __m128i& newlines) {
+  const auto load = [](const char* p) {
+    return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+  };
+  const __m128i after = load(s + 1), second = load(s + 2);
+  newlines = _mm_cmpeq_epi8(load(s), _mm_set1_epi8('\n'));
+  const __m128i letter = _mm_sub_epi8(after, _mm_set1_epi8('A'));  // 0..25 for A..Z
+  const __m128i upper =
+      _mm_andnot_si128(_mm_cmpeq_epi8(after, _mm_set1_epi8('N')),
+                       _mm_cmpeq_epi8(_mm_min_epu8(letter, _mm_set1_epi8(25)), letter));
+  const __m128i digit = _mm_sub_epi8(second, _mm_set1_epi8('0'));  // 0..9 for 0..9
+  const __m128i is_digit = _mm_cmpeq_epi8(_mm_min_epu8(digit, _mm_set1_epi8(9)), digit);
+  return _mm_movemask_epi8(_mm_andnot_si128(_mm_and_si128(upper, is_digit), newlines));
+}
+#endif
+
+// From the line at `pos`, the first line that mayHoldHead's first test does not pass over
+// (the usual line, G1 X10, which can hold no label and no control keyword), or the last line
+// start before the end of `text` that could be told; `pos` itself when its line is not usual.
+// Sixteen characters at a time (SSE2) instead of a memchr and a test for every line: the
+// pre-scan was 67 instructions a block of the issue 22 contour (docs/performance.md section
+// 34). Without SSE2 no line is skipped here (extend tests each one).
+TextPos skipUsualLines(std::string_view text, TextPos pos) {
+#if defined(__SSE2__)
+  const char* const s = text.data();
+  const size_t n = text.size(), begin = pos.offset;
+  if (begin + 18 > n || s[begin] < 'A' || s[begin] > 'Z' || s[begin] == 'N' ||
+      !isDigitChar(s[begin + 1]))
+    return pos;
+  size_t i = begin;
+  long long lines = 0;
+  // Newlines passed, per byte lane (-1 each, so at most 255 groups between two sums).
+  __m128i lanes = _mm_setzero_si128();
+  const auto sum = [&] {
+    const __m128i s8 = _mm_sad_epu8(_mm_sub_epi8(_mm_setzero_si128(), lanes), _mm_setzero_si128());
+    lines += _mm_cvtsi128_si32(s8) + _mm_cvtsi128_si32(_mm_srli_si128(s8, 8));
+    lanes = _mm_setzero_si128();
+  };
+  __m128i newlines;
+  for (int groups = 0; i + 18 <= n; i += 16) {
+    if (const int unusual = unusualLineStarts(s + i, newlines); unusual != 0) {
+      sum();
+      const int at = std::countr_zero(static_cast<unsigned>(unusual));
+      const unsigned before = static_cast<unsigned>(_mm_movemask_epi8(newlines)) & ((1u << at) - 1);
+      return {i + static_cast<size_t>(at) + 1,
+              pos.line + static_cast<int>(lines + std::popcount(before) + 1)};
+    }
+    lanes = _mm_add_epi8(lanes, newlines);
+    if (++groups == 255) {
+      sum();
+      groups = 0;
+    }
+  }
+  sum();
+  // Back to the start of the line that the last group ended in (every newline counted is
+  // before it).
+  size_t start = i;
+  while (start > begin && s[start - 1] != '\n') --start;
+  return {start, pos.line + static_cast<int>(lines)};
+#else
+  static_cast<void>(text);
+  return pos;
+#endif
+}
+
 }  // namespace
 
 ProgramIndex::ProgramIndex(const SourceFile& file, int max_depth, size_t max_line_length,
@@ -74,6 +147,12 @@ void ProgramIndex::extend(const SourceFile& file) {
   std::string_view line;
   std::string norm;
   while (true) {
+    // The usual lines up to the next MiB (the released pages follow it), at once.
+    const size_t mib = (scanned_.offset | 0xFFFFF) + 1;
+    const TextPos skipped =
+        skipUsualLines(text.substr(0, std::min(text.size(), mib + 18)), scanned_);
+    if (skipped.offset >= mib) file.releaseBefore(mib);
+    scanned_ = skipped;
     TextPos here = scanned_;
     if (!nextLine(text, scanned_, line)) break;
     if ((scanned_.offset & 0xFFFFF) < line.size() + 1) file.releaseBefore(here.offset);

@@ -5,10 +5,12 @@
 // takes the general parser and the general statement loop. Random programs of such blocks
 // must give the same segments and the same alarm (number, line, column) both ways. Blocks of
 // X, Y, Z, G0..G3, F and CR= alone are collected as they are scanned, without statements
-// (Interpreter::plainLine, section 30); with ` S0` appended (an S word, which plainWord leaves
-// to collectWord) they take the plain statements of simpleWords, a third way compared too.
+// (Interpreter::plainLine, section 30; G40, G41 and G42 too since section 34); with ` S0`
+// appended (an S word, which plainWord leaves to collectWord) they take the plain statements of
+// simpleWords, a third way compared too.
 #include <gtest/gtest.h>
 
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,20 +76,38 @@ Outcome expectSame(const std::string& fast_text, const std::string& general_text
   return fast;
 }
 
+// One program written three ways: as it is, with ` S=(0)` after every block (the general parser
+// and statement loop) and with ` S0` (the plain statements of simpleWords).
+struct ThreeWays {
+  std::string fast, general, statements;
+  explicit ThreeWays(const std::string& head) : fast(head), general(head), statements(head) {}
+  void add(const std::string& block) {
+    fast += block + "\n";
+    general += block + " S=(0)\n";
+    statements += block + " S0\n";
+  }
+  // The plain way's outcome, after comparing both fast ways with the general one.
+  Outcome compare() const {
+    expectSame(statements, general);
+    return expectSame(fast, general);
+  }
+};
+
 // Random programs of 5..29 blocks of 1..4 words from `words` (a number after each word that
 // ends in a letter, '=' or '-'), each compared with its twin; odd programs take only the first
-// `safe` words. Counts the programs with segments and with an alarm.
+// `safe` words. More than `min_segments` programs must make segments and more than `min_alarm`
+// end in an alarm, so that both kinds of outcome are compared.
 void compareRandomPrograms(const std::vector<const char*>& words, unsigned safe, unsigned seed,
-                           int& with_segments, int& with_alarm) {
+                           int min_segments, int min_alarm) {
+  int with_segments = 0, with_alarm = 0;
   const char* const numbers[] = {"10", "-2.5", "0.125", "100", "+3", ".5", "7", "-40.75", "0"};
   auto next = [&](unsigned n) {
     seed = seed * 1103515245u + 12345u;
     return (seed >> 16) % n;
   };
   for (int program = 0; program < 300; ++program) {
-    std::string fast = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n";
+    ThreeWays three("$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n");
     const unsigned choice = program % 2 ? safe : static_cast<unsigned>(words.size());
-    std::string general = fast, statements = fast;
     const unsigned blocks = 5 + next(25);
     for (unsigned k = 0; k < blocks; ++k) {
       std::string block;
@@ -105,18 +125,14 @@ void compareRandomPrograms(const std::vector<const char*>& words, unsigned safe,
         if (w) block += ' ';
         block += word;
       }
-      fast += block;
-      fast += '\n';
-      general += block;
-      general += " S=(0)\n";
-      statements += block;
-      statements += " S0\n";
+      three.add(block);
     }
-    const Outcome o = expectSame(fast, general);
-    expectSame(statements, general);
+    const Outcome o = three.compare();
     with_segments += o.segments.size() > 2;
     with_alarm += o.alarm.has_value();
   }
+  EXPECT_GT(with_segments, min_segments);
+  EXPECT_GT(with_alarm, min_alarm);
 }
 
 TEST(FrontFastPath, PlainBlocksCollectAsTheGeneralPath) {
@@ -126,11 +142,7 @@ TEST(FrontFastPath, PlainBlocksCollectAsTheGeneralPath) {
       "G0", "G1", "G90", "G91", "G64", "M3",  "T1",  "D1",    "F",     "X",    "Y",
       "Z",  "S",  "X",   "G2",  "G3",  "G17", "G18", "G5",    "G41",   "G40",  "M30",
       "D0", "F-", "I",   "J",   "K",   "CR=", "AR=", "TURN=", "DISC=", "OFFN="};
-  int with_segments = 0, with_alarm = 0;
-  compareRandomPrograms(words, 14, 4711, with_segments, with_alarm);
-  // Both kinds of outcome occur often enough to compare something.
-  EXPECT_GT(with_segments, 60);
-  EXPECT_GT(with_alarm, 60);
+  compareRandomPrograms(words, 14, 4711, 60, 60);
 }
 
 // A block whose words plainWord collected alone is cleared for the next block by resetting only
@@ -142,11 +154,82 @@ TEST(FrontFastPath, PlainBlocksAfterOtherBlocksAsTheGeneralPath) {
       "G1",  "X",   "Y",   "Z",   "F",  "RND=",  "RNDM=", "M3",  "T1", "D1",  "G91",   "G90",
       "G64", "G0",  "CR=", "G2",  "G3", "CHF=",  "G4",    "I",   "J",  "AR=", "TURN=", "OFFN=",
       "G41", "G40", "G17", "G18", "F-", "DISC=", "G5",    "M30", "D0", "K",   "X"};
-  int with_segments = 0, with_alarm = 0;
-  compareRandomPrograms(words, 13, 815, with_segments, with_alarm);
   // The contour words end many programs with an alarm: fewer run through (32 of 300).
-  EXPECT_GT(with_segments, 25);
-  EXPECT_GT(with_alarm, 60);
+  compareRandomPrograms(words, 13, 815, 25, 60);
+}
+
+// The approach and retraction lines of a compensated contour (G41 G1 X10 Y0, G40 G1 X-25 Y-20)
+// are plain lines (section 34): G group 7 must reach the compensation as gCompensation sets it,
+// in every order and mix with the other words, alarms included (a plane change under G41, G2
+// without its radius, ...).
+TEST(FrontFastPath, CompensationWordsCollectAsTheGeneralPath) {
+  const std::vector<const char*> words = {
+      "G41", "X",  "Y",   "G1",  "G42", "G40", "X",  "Y",   "G0",  "F", "Z",
+      "G2",  "G3", "CR=", "G17", "G18", "G5",  "M3", "G41", "G40", "G-"};
+  // Most programs end in an alarm (an address twice, the compensation's own alarms on random
+  // moves): fewer run through (29 of 300).
+  compareRandomPrograms(words, 10, 2026, 20, 60);
+}
+
+// Laps of the issue 22 contour (bench/trc_contour.py): G41 and G42 laps, each with its approach
+// and retraction line, all three ways.
+TEST(FrontFastPath, CompensatedContourAsTheGeneralPath) {
+  const char* const lap[] = {"G0 X-20 Y-20",
+                             "G1 Z-1 F1000",
+                             "G41 G1 X10 Y0",
+                             "G2 X0 Y10 CR=10",
+                             "G1 X0 Y50",
+                             "G2 X10 Y60 CR=10",
+                             "G1 X90 Y60",
+                             "G2 X100 Y50 CR=10",
+                             "G1 X100 Y10",
+                             "G2 X90 Y0 CR=10",
+                             "G1 X10 Y0",
+                             "G40 G1 X-25 Y-20",
+                             "G0 Z5",
+                             "G0 X-20 Y-20",
+                             "N70 G42 G1 X10 Y0",
+                             "G1 X90 Y0",
+                             "G3 X100 Y10 CR=10",
+                             "G1 X100 Y50",
+                             "G3 X90 Y60 CR=10",
+                             "G1 X10 Y60",
+                             "G3 X0 Y50 CR=10",
+                             "G1 X0 Y10",
+                             "G3 X10 Y0 CR=10",
+                             "G40 G1 X-25 Y-20",
+                             "G0 Z5"};
+  ThreeWays three("$TC_DP1[1,1]=120\n$TC_DP3[1,1]=50\n$TC_DP6[1,1]=4\nG17 G90 G94 G71\nT1 D1\n");
+  for (int pass = 0; pass < 3; ++pass)
+    for (const char* line : lap) three.add(line);
+  const Outcome o = three.compare();
+  EXPECT_FALSE(o.alarm.has_value());
+  EXPECT_EQ(o.segments.size(), 72u);  // the moves of the three passes, as both paths make them
+}
+
+// The plain line is scanned where it stands when a newline follows it, in a copy otherwise (the
+// last line of a text without its newline): CR LF, a CR left inside the line (CR CR LF) and a
+// last line ending in CR=, all as the general path.
+TEST(FrontFastPath, LineEndsAsTheGeneralPath) {
+  const char* const lines[] = {"G1 X10 Y0 F100",   "G2 X0 Y10 CR=10", "G1 Y50",
+                               "G3 X10 Y60 CR=10", "G1 X40 CR=3",     "G2 X50 Y50 CR=10"};
+  for (const char* eol : {"\n", "\r\n", "\r\r\n", "\r"}) {
+    SCOPED_TRACE(::testing::PrintToString(std::string(eol)));
+    std::string fast = "G0 X0 Y0 Z0\n", general = fast;
+    for (const char* line : lines) {
+      const bool last = line == lines[std::size(lines) - 1];
+      fast += std::string(line) + (last ? "" : eol);
+      general += std::string(line) + " S=(0)" + (last ? "" : eol);
+    }
+    const Outcome o = expectSame(fast, general);
+    // G1 .. CR=3 ends each program with the circle alarm after four moves (the alarm's column
+    // compared above); a CR inside a line is no character of a block (an alarm at once), and a
+    // CR alone ends no line.
+    const bool clean =
+        std::string(eol).find("\r\r") == std::string::npos && std::string(eol) != "\r";
+    EXPECT_TRUE(o.alarm.has_value());
+    EXPECT_EQ(o.segments.size(), clean ? 4u : 0u);
+  }
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ncoffset/alarm.hpp"
 
@@ -253,6 +255,52 @@ TEST(ProgramIndex, OverlongLinesAreLeftForExecution) {
   std::string text = "G1 X1\nIF R1==1 ; " + std::string(100, 'x') + "\nG1\n";
   auto file = SourceFile::fromString("T.MPF", text);
   EXPECT_NO_THROW(ProgramIndex(*file, 16, 50));
+}
+
+// The usual lines (an upper-case letter other than N, then a digit) are passed over sixteen
+// characters at a time (skipUsualLines, docs/performance.md section 34); the labels and
+// structures between them must get the offsets and line numbers that reading line by line
+// gives, whatever the lengths, the line ends (LF, CR LF) and where the groups of sixteen fall.
+TEST(ProgramIndex, LabelsAmongUsualLinesOfEveryLength) {
+  unsigned seed = 2026;
+  auto next = [&](unsigned n) {
+    seed = seed * 1103515245u + 12345u;
+    return (seed >> 16) % n;
+  };
+  for (int program = 0; program < 200; ++program) {
+    std::string text;
+    std::vector<std::pair<std::string, int>> labels;
+    int line = 1, open = 0;
+    const unsigned lines = 1 + next(120);
+    for (unsigned k = 0; k < lines; ++k, ++line) {
+      const unsigned kind = next(10);
+      if (kind == 0) {
+        labels.emplace_back("LBL" + std::to_string(k), line);
+        text += labels.back().first + ":";
+      } else if (kind == 1 && open < 3) {
+        text += "WHILE 0";
+        ++open;
+      } else if (kind == 2 && open > 0) {
+        text += "ENDWHILE";
+        --open;
+      } else if (kind == 3) {
+        text += next(2) ? "N10 G1" : "X";  // not usual: a block number, a letter alone
+      } else {
+        text += static_cast<char>('A' + next(13));  // A..M
+        text += std::string(1 + next(40), static_cast<char>('0' + next(10)));
+      }
+      text += next(4) == 0 ? "\r\n" : "\n";
+    }
+    for (; open > 0; --open, ++line) text += "ENDWHILE\n";
+    if (next(2)) text += "G1";  // a last line without its newline
+    const Indexed r = build(text);
+    for (const auto& [name, at] : labels) {
+      const TextPos* pos = r.index->label(name);
+      ASSERT_NE(pos, nullptr) << text;
+      EXPECT_EQ(pos->line, at) << text;
+      EXPECT_EQ(pos->offset, r.offset(at)) << text;
+    }
+  }
 }
 
 }  // namespace
