@@ -89,7 +89,7 @@ void Interpreter::finishBlock() {
   } else if (words_.extra_axes) [[unlikely]] {  // A, B, C, ...: axis_words.cpp
     moved = axesBlock(axes_consumed, geometry);
   } else if (builds) {
-    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+    moved = motion_.buildBlock(words_, modal_, {line_, file_, feed_before_, motion_before_});
   }
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
@@ -129,7 +129,7 @@ void Interpreter::finishPlainBlock(int column) {
     threadLeadWords();  // CR= without G2/G3: the circle alarm
   bool moved = false;
   if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
-    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+    moved = motion_.buildPlain(words_, modal_, {line_, file_, feed_before_, motion_before_});
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
   if (!moved) motion_.output().blockWithoutMotion();

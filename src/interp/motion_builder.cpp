@@ -66,6 +66,7 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
 }
 
 bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const BlockContext& at) {
+  plain_settings_ = false;  // m_.trc may be built here from another modal state
   suppressed_ = w.suppress_frames != 0;
   // Without a frame WCS = BCS: the products are skipped (the usual case).
   const bool plain = suppressed_ || frames_.isIdentity();
@@ -266,6 +267,12 @@ NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& 
   if (m_.has_tip) m_.tip = tipVector(modal.plane);
 }
 
+void MotionBuilder::plainSettings(const ModalState& modal) {
+  compensationSettings(modal);
+  full_length_ = tools_.lengthVector(modal.plane);
+  plain_settings_ = true;
+}
+
 Vec3 MotionBuilder::tipVector(Plane plane) {
   // P - S of the edge (tool::ToolSelection::tipVector) with the components on the axes the
   // block's frame mirrors inverted: mirroring a plane axis mirrors the effective cutting edge
@@ -282,16 +289,6 @@ Vec3 MotionBuilder::tipVector(Plane plane) {
     if (mirrored_[static_cast<size_t>(i)]) tip[i] = -tip[i];
   return tip;
 }
-
-namespace {
-
-// Beyond the machine's number range or not a number (|v| <= 1e9 is false for NaN). Without
-// branches: the usual block is within.
-inline bool outOfRange(const Vec3& p) {
-  return !(std::fabs(p.x) <= 1e9) | !(std::fabs(p.y) <= 1e9) | !(std::fabs(p.z) <= 1e9);
-}
-
-}  // namespace
 
 NCOFFSET_INLINE_STEP void MotionBuilder::checkRange(bool plain) const {
   const core::MotionBlock& m = m_;
