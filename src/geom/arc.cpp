@@ -43,7 +43,7 @@ ArcSolution solveArc(const ArcRequest& r) {
     }
     s.end = r.end ? *r.end : r.start;
     double r2 = dist(s.end, s.centre);
-    double tol = std::fmax(r.tol_const, r.tol_factor * s.radius);
+    double tol = maxOf(r.tol_const, r.tol_factor * s.radius);
     if (std::fabs(r2 - s.radius) > tol)
       raise(AlarmNumber::CircleEndPoint,
             fmt::format("error in end point of circle: start radius {:.6g}, end radius {:.6g}, "
@@ -64,13 +64,13 @@ ArcSolution solveArc(const ArcRequest& r) {
   if (r.cr) {
     double rad = std::fabs(*r.cr);
     if (rad < 1e-9) raise(AlarmNumber::CircleProgramming, "circle programming error: CR=0");
-    double tol = std::fmax(r.tol_const, r.tol_factor * rad);
+    double tol = maxOf(r.tol_const, r.tol_factor * rad);
     if (d > 2 * rad + tol)
       raise(
           AlarmNumber::CircleEndPoint,
           fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
                       d, 2 * rad));
-    h = std::sqrt(std::fmax(0.0, rad * rad - d * d / 4));
+    h = std::sqrt(maxOf(0.0, rad * rad - d * d / 4));
     bool small = *r.cr > 0;  // CR>0: arc up to 180 degrees
     double side = (r.ccw == small) ? 1 : -1;
     s.centre = {mid.a + side * h * left.a, mid.o + side * h * left.o};

@@ -102,6 +102,8 @@ class MotionBuilder {
   [[gnu::cold, noreturn]] static void targetAlarm(double value, int axis);
   // Beyond the machine's number range or not a number (|v| <= 1e9 is false for NaN). Without
   // branches: the usual block is within.
+  // Every axis as takeUpLength compares them (NaN is not equal).
+  static bool equal(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
   static bool outOfRange(const Vec3& p) {
     return !(std::fabs(p.x) <= 1e9) | !(std::fabs(p.y) <= 1e9) | !(std::fabs(p.z) <= 1e9);
   }
@@ -142,8 +144,11 @@ class MotionBuilder {
   core::ApproachPoints approach_points_;
   // m_.trc, m_.has_tip, m_.tip and full_length_ were built by buildPlain from the interpreter's
   // modal state and tool, and only plain lines ran since (settingsMayChange): they still hold.
+  // (So are m_.plane, m_.feed_unit, m_.lead_change, m_.sar.kind; the frame is the last motion's,
+  // the identity, and the modal motion no thread: only other lines change them.)
   bool plain_settings_ = false;
-  Vec3 full_length_;  // tools_.lengthVector(plane) when plain_settings_
+  Vec3 full_length_;       // tools_.lengthVector(plane) when plain_settings_
+  bool taken_up_ = false;  // applied_offset_ == full_length_: nothing to take up
 };
 
 }  // namespace ncoffset::interp

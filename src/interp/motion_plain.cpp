@@ -49,12 +49,14 @@ void MotionBuilder::targetAlarm(double value, int axis) {
   m.centre = {};
   m.applicate = 2;
   m.turns = 0;
-  const Vec3 full = full_length_;
   const Vec3 before = applied_offset_;
-  if (!(before.x == full.x && before.y == full.y && before.z == full.z)) [[unlikely]]
+  if (!taken_up_) [[unlikely]] {
+    const Vec3 full = full_length_;
     for (int i = 0; i < 3; ++i)
       if (w.axis[i] && applied_offset_[i] != full[i] && takesUpLength(w, modal, i))
         applied_offset_[i] = full[i];
+    taken_up_ = equal(applied_offset_, full);
+  }
   const Vec3 moved = (to + applied_offset_) - (bcs_ + before);
   return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
 }
@@ -63,13 +65,14 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
                                const BlockContext& at) {
   core::MotionBlock& m = m_;
   // A frame (or a changed one: its start point, its copy into the block) or a thread motion
-  // (its lead): the general way.
-  if (!frames_.isIdentity() || m.frame.state() != frames_.blockFrame().state() ||
-      isThreadMotion(modal.motion) || !short_way) [[unlikely]]
-    return build(w, modal, at);
-  suppressed_ = false;
-  if (!plain_settings_) [[unlikely]]
+  // (its lead): the general way. Only a line that is not plain changes them (plain lines
+  // program G0..G3 alone), so they are asked again only then.
+  if (!plain_settings_) [[unlikely]] {
+    if (!frames_.isIdentity() || m.frame.state() != frames_.blockFrame().state() ||
+        isThreadMotion(modal.motion) || !short_way)
+      return build(w, modal, at);
     plainSettings(modal);
+  }
   Vec3 to = plainTarget(w, modal);
   m.motion = modal.motion;
   m.line = at.line;
@@ -80,21 +83,21 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
   if (m.has_feed && modal.feed <= 0)
     raise(AlarmNumber::FeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
   m.feed = m.has_feed ? modal.feed : 0;
-  m.feed_unit = modal.feed_unit;
-  m.lead_change = 0;
-  m.sar.kind = core::SarKind::None;
-  const bool circle = m.motion == Motion::G2 || m.motion == Motion::G3;
-  if (circle) {
+  // checkRange: the end point, and a circle's centre (rangeAlarm names the first beyond).
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     arc(w, modal, wcs_, true, to);
-  } else if (!plainTakeUp(w, modal, to)) {
-    if (routed_) corner_.dropRequest();
-    wcs_ = to;
-    return false;  // zero-length block: no segment
+    if (outOfRange(m.end + applied_offset_) || outOfRange(m.centre)) [[unlikely]]
+      rangeAlarm(true);
+  } else {
+    if (!plainTakeUp(w, modal, to)) {
+      if (routed_) corner_.dropRequest();
+      wcs_ = to;
+      return false;  // zero-length block: no segment
+    }
+    if (outOfRange(m.end + applied_offset_)) [[unlikely]]
+      rangeAlarm(true);
   }
   m.tool_offset = applied_offset_;
-  m.plane = modal.plane;
-  if (outOfRange(m.end + applied_offset_) || (circle && outOfRange(m.centre))) [[unlikely]]
-    rangeAlarm(true);
   ++m.seq;
   const core::Feedback back = routed_ ? routedMotion(m) : next_.motion(m);
   if (back.approach) [[unlikely]]

@@ -150,9 +150,9 @@ bool change(Random& next, ModalState& modal, Side& a, Side& b) {
       modal.trc_strategy = static_cast<core::TrcStrategy>(next(3));
       modal.collision = next(2) ? CollisionCheck::Cdon : CollisionCheck::Cdof;
       break;
-    default:
-      modal.motion = next(3) ? Motion::G1 : static_cast<Motion>(next(5));  // G33 too
-      return false;
+    default:  // G33 needs a line of other words
+      modal.motion = next(3) ? Motion::G1 : static_cast<Motion>(next(5));
+      return isThreadMotion(modal.motion);
   }
   return true;
 }
