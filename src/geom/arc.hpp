@@ -37,6 +37,12 @@ inline double maxOf(double a, double b) {
   return a < b ? b : a;
 }
 
+// solveArc for a circle by its radius CR= (negative: more than a semicircle) from `start` to
+// `end`: what solveArc does with a request of only these (the motion builder's short way calls
+// it without building one).
+ArcSolution arcByRadius(Vec2 start, Vec2 end, double cr, bool ccw, double tol_const,
+                        double tol_factor);
+
 // Throws AlarmError 14040 (end point not on the circle), 14045 (circle not defined).
 ArcSolution solveArc(const ArcRequest& r);
 

@@ -183,14 +183,20 @@ void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3
   }
   if (w.cr) req.cr = toMm(modal, *w.cr);
   if (w.ar) req.ar = *w.ar;
-  const geom::ArcSolution sol = geom::solveArc(req);
-  t[a] = sol.end.a;
-  t[o] = sol.end.o;
+  arcEnd(w, geom::solveArc(req), pa, f, target);
+}
+
+void MotionBuilder::arcEnd(const BlockWords& w, const geom::ArcSolution& sol, PlaneAxes pa,
+                           const double (&f)[3], Vec3& target) {
+  core::MotionBlock& m = m_;
+  double t[3] = {target.x, target.y, target.z};
+  t[pa.abscissa] = sol.end.a;
+  t[pa.ordinate] = sol.end.o;
   target = {t[0], t[1], t[2]};
   m.end = target;
   double c[3] = {f[0], f[1], f[2]};
-  c[a] = sol.centre.a;
-  c[o] = sol.centre.o;
+  c[pa.abscissa] = sol.centre.a;
+  c[pa.ordinate] = sol.centre.o;
   m.centre = {c[0], c[1], c[2]};
   m.applicate = pa.applicate;
   m.turns = w.turn.value_or(0);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/stage.hpp"
+#include "geom/arc.hpp"
 #include "interp/corner_stage.hpp"
 #include "interp/frame_state.hpp"
 #include "interp/machine_data.hpp"
@@ -87,6 +88,11 @@ class MotionBuilder {
   // G2/G3: end point and centre by geom::solveArc (PM-NC "Circular interpolation").
   void arc(const BlockWords& w, const ModalState& modal, const Vec3& from, bool plain,
            Vec3& target);
+  // arc()'s last step: the solution's end point and centre into the block (`f`: the start).
+  void arcEnd(const BlockWords& w, const geom::ArcSolution& sol, PlaneAxes pa, const double (&f)[3],
+              Vec3& target);
+  // arc() for a circle by CR= alone (no centre, AR=) whose end point is programmed (buildPlain).
+  void radiusArc(const BlockWords& w, const ModalState& modal, Vec3& target);
   // G0/G1: the tool length taken up by each axis the block moves (W1 2.1, spec §2.6). False
   // when the block moves nowhere.
   // A thread or tapping line (threads.cpp): its feed is the lead; G63 names the block's G1.

@@ -61,6 +61,17 @@ void MotionBuilder::targetAlarm(double value, int axis) {
   return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
 }
 
+void MotionBuilder::radiusArc(const BlockWords& w, const ModalState& modal, Vec3& target) {
+  const PlaneAxes pa = planeAxes(modal.plane);
+  const double f[3] = {wcs_.x, wcs_.y, wcs_.z};
+  const double t[3] = {target.x, target.y, target.z};
+  const geom::Vec2 start{f[pa.abscissa], f[pa.ordinate]}, end{t[pa.abscissa], t[pa.ordinate]};
+  arcEnd(w,
+         geom::arcByRadius(start, end, toMm(modal, *w.cr), m_.motion == Motion::G3,
+                           data_.get(md_circle_const_), data_.get(md_circle_factor_)),
+         pa, f, target);
+}
+
 bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
                                const BlockContext& at) {
   core::MotionBlock& m = m_;
@@ -85,7 +96,13 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
   m.feed = m.has_feed ? modal.feed : 0;
   // checkRange: the end point, and a circle's centre (rangeAlarm names the first beyond).
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
-    arc(w, modal, wcs_, true, to);
+    // CR= with the end point in the plane and nothing else: solveArc's request is that alone.
+    const PlaneAxes pa = planeAxes(modal.plane);
+    if (w.cr && !w.ar && !(w.centre[0] || w.centre[1] || w.centre[2]) &&
+        (w.axis[pa.abscissa] || w.axis[pa.ordinate]))
+      radiusArc(w, modal, to);
+    else
+      arc(w, modal, wcs_, true, to);
     if (outOfRange(m.end + applied_offset_) || outOfRange(m.centre)) [[unlikely]]
       rangeAlarm(true);
   } else {
