@@ -15,7 +15,45 @@ double dist(Vec2 p, Vec2 q) {
   const double a = q.a - p.a, o = q.o - p.o;
   return std::sqrt(a * a + o * o);
 }
+
+// The chord from the start to the end point of a circle given by its radius or opening angle.
+struct Chord {
+  double length;
+  Vec2 mid, left;  // its middle and the unit normal to its left
+};
+
+Chord chord(Vec2 start, Vec2 end) {
+  const double d = dist(start, end);
+  if (d < 1e-9)
+    raise(AlarmNumber::CircleProgramming,
+          "circle programming error: a full circle needs its centre (I, J, K)");
+  Vec2 mid{(start.a + end.a) / 2, (start.o + end.o) / 2};
+  Vec2 u{(end.a - start.a) / d, (end.o - start.o) / d};
+  return {d, mid, {-u.o, u.a}};
+}
+
 }  // namespace
+
+ArcSolution arcByRadius(Vec2 start, Vec2 end, double cr, bool ccw, double tol_const,
+                        double tol_factor) {
+  ArcSolution s;
+  s.end = end;
+  const Chord c = chord(start, end);
+  const double d = c.length;
+  double rad = std::fabs(cr);
+  if (rad < 1e-9) raise(AlarmNumber::CircleProgramming, "circle programming error: CR=0");
+  double tol = maxOf(tol_const, tol_factor * rad);
+  if (d > 2 * rad + tol)
+    raise(AlarmNumber::CircleEndPoint,
+          fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
+                      d, 2 * rad));
+  const double h = std::sqrt(maxOf(0.0, rad * rad - d * d / 4));
+  bool small = cr > 0;  // CR>0: arc up to 180 degrees
+  double side = (ccw == small) ? 1 : -1;
+  s.centre = {c.mid.a + side * h * c.left.a, c.mid.o + side * h * c.left.o};
+  s.radius = rad;
+  return s;
+}
 
 ArcSolution solveArc(const ArcRequest& r) {
   const int defs = (r.centre ? 1 : 0) + (r.cr ? 1 : 0) + (r.ar ? 1 : 0);
@@ -43,7 +81,7 @@ ArcSolution solveArc(const ArcRequest& r) {
     }
     s.end = r.end ? *r.end : r.start;
     double r2 = dist(s.end, s.centre);
-    double tol = std::fmax(r.tol_const, r.tol_factor * s.radius);
+    double tol = maxOf(r.tol_const, r.tol_factor * s.radius);
     if (std::fabs(r2 - s.radius) > tol)
       raise(AlarmNumber::CircleEndPoint,
             fmt::format("error in end point of circle: start radius {:.6g}, end radius {:.6g}, "
@@ -52,31 +90,12 @@ ArcSolution solveArc(const ArcRequest& r) {
     return s;
   }
   if (!r.end) raise(AlarmNumber::CircleProgramming, "circle programming error: end point missing");
+  if (r.cr) return arcByRadius(r.start, *r.end, *r.cr, r.ccw, r.tol_const, r.tol_factor);
   s.end = *r.end;
-  double d = dist(r.start, s.end);
-  if (d < 1e-9)
-    raise(AlarmNumber::CircleProgramming,
-          "circle programming error: a full circle needs its centre (I, J, K)");
-  Vec2 mid{(r.start.a + s.end.a) / 2, (r.start.o + s.end.o) / 2};
-  Vec2 u{(s.end.a - r.start.a) / d, (s.end.o - r.start.o) / d};
-  Vec2 left{-u.o, u.a};
+  const Chord c = chord(r.start, s.end);
+  const double d = c.length;
+  const Vec2 mid = c.mid, left = c.left;
   double h;
-  if (r.cr) {
-    double rad = std::fabs(*r.cr);
-    if (rad < 1e-9) raise(AlarmNumber::CircleProgramming, "circle programming error: CR=0");
-    double tol = std::fmax(r.tol_const, r.tol_factor * rad);
-    if (d > 2 * rad + tol)
-      raise(
-          AlarmNumber::CircleEndPoint,
-          fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
-                      d, 2 * rad));
-    h = std::sqrt(std::fmax(0.0, rad * rad - d * d / 4));
-    bool small = *r.cr > 0;  // CR>0: arc up to 180 degrees
-    double side = (r.ccw == small) ? 1 : -1;
-    s.centre = {mid.a + side * h * left.a, mid.o + side * h * left.o};
-    s.radius = rad;
-    return s;
-  }
   double ar = *r.ar;
   if (!(ar > 0 && ar < 360))
     raise(AlarmNumber::CircleProgramming,

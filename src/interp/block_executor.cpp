@@ -89,7 +89,7 @@ void Interpreter::finishBlock() {
   } else if (words_.extra_axes) [[unlikely]] {  // A, B, C, ...: axis_words.cpp
     moved = axesBlock(axes_consumed, geometry);
   } else if (builds) {
-    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+    moved = motion_.buildBlock(words_, modal_, {line_, file_, feed_before_, motion_before_});
   }
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();

@@ -66,6 +66,7 @@ NCOFFSET_INLINE_STEP Vec3 MotionBuilder::target(const BlockWords& w, const Modal
 }
 
 bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const BlockContext& at) {
+  plain_settings_ = false;  // m_.trc may be built here from another modal state
   suppressed_ = w.suppress_frames != 0;
   // Without a frame WCS = BCS: the products are skipped (the usual case).
   const bool plain = suppressed_ || frames_.isIdentity();
@@ -144,50 +145,59 @@ std::optional<Vec3> MotionBuilder::preprocessorStop(bool alarm) {
 void MotionBuilder::arc(const BlockWords& w, const ModalState& modal, const Vec3& from, bool plain,
                         Vec3& target) {
   core::MotionBlock& m = m_;
-  PlaneAxes pa = planeAxes(modal.plane);
+  const PlaneAxes pa = planeAxes(modal.plane);
+  const int a = pa.abscissa, o = pa.ordinate;
   if (w.centre[pa.applicate])
     raise(AlarmNumber::CircleProgramming,
           fmt::format("circle programming error: {} is not an interpolation parameter in the "
                       "active plane",
                       "IJK"[pa.applicate]));
-  const Mat3& l = frame().linear;
-  Vec3 ea, eo;
-  ea[pa.abscissa] = 1;
-  eo[pa.ordinate] = 1;
-  if (!plain && std::fabs(norm(l * ea) - norm(l * eo)) > 1e-9)
-    raise(AlarmNumber::FrameNotAffine,
-          "a circle under different scale factors of the plane axes is an ellipse, which is not "
-          "modelled");
+  if (!plain) {
+    const Mat3& l = frame().linear;
+    Vec3 ea, eo;
+    ea[a] = 1;
+    eo[o] = 1;
+    if (std::fabs(norm(l * ea) - norm(l * eo)) > 1e-9)
+      raise(AlarmNumber::FrameNotAffine,
+            "a circle under different scale factors of the plane axes is an ellipse, which is "
+            "not modelled");
+  }
+  // The points as arrays: indexed by the plane's axes without Vec3's choice per access.
+  const double f[3] = {from.x, from.y, from.z};
+  double t[3] = {target.x, target.y, target.z};
   geom::ArcRequest req;
-  req.start = {from[pa.abscissa], from[pa.ordinate]};
+  req.start = {f[a], f[o]};
   req.ccw = m.motion == Motion::G3;
   req.tol_const = data_.get(md_circle_const_);
   req.tol_factor = data_.get(md_circle_factor_);
-  if (w.axis[pa.abscissa] || w.axis[pa.ordinate])
-    req.end = geom::Vec2{target[pa.abscissa], target[pa.ordinate]};
-  if (w.centre[pa.abscissa] || w.centre[pa.ordinate]) {
-    geom::Vec2 c;
-    int axes[2] = {pa.abscissa, pa.ordinate};
-    double* out[2] = {&c.a, &c.o};
-    for (int k = 0; k < 2; ++k) {
-      int ax = axes[k];
-      double v = w.centre[ax] ? toMm(modal, w.centre_value[ax]) : 0;
-      // I, J, K are incremental from the start point unless written =AC(..); an absolute
-      // centre is a diameter under DIAMON/DIAM90, an incremental one a radius (FM P1
-      // "Transverse axes", docs/turning.md).
-      *out[k] = w.centre_mode[ax] == AxisMode::AC ? v * modal.diam_abs[ax] : from[ax] + v;
-    }
-    req.centre = c;
+  if (w.axis[a] || w.axis[o]) req.end = geom::Vec2{t[a], t[o]};
+  if (w.centre[a] || w.centre[o]) {
+    // I, J, K are incremental from the start point unless written =AC(..); an absolute centre
+    // is a diameter under DIAMON/DIAM90, an incremental one a radius (FM P1 "Transverse axes",
+    // docs/turning.md).
+    auto centre = [&](int ax) {
+      const double v = w.centre[ax] ? toMm(modal, w.centre_value[ax]) : 0;
+      return w.centre_mode[ax] == AxisMode::AC ? v * modal.diam_abs[ax] : f[ax] + v;
+    };
+    req.centre = geom::Vec2{centre(a), centre(o)};
   }
   if (w.cr) req.cr = toMm(modal, *w.cr);
   if (w.ar) req.ar = *w.ar;
-  geom::ArcSolution sol = geom::solveArc(req);
-  target[pa.abscissa] = sol.end.a;
-  target[pa.ordinate] = sol.end.o;
+  arcEnd(w, geom::solveArc(req), pa, f, target);
+}
+
+void MotionBuilder::arcEnd(const BlockWords& w, const geom::ArcSolution& sol, PlaneAxes pa,
+                           const double (&f)[3], Vec3& target) {
+  core::MotionBlock& m = m_;
+  double t[3] = {target.x, target.y, target.z};
+  t[pa.abscissa] = sol.end.a;
+  t[pa.ordinate] = sol.end.o;
+  target = {t[0], t[1], t[2]};
   m.end = target;
-  m.centre = from;
-  m.centre[pa.abscissa] = sol.centre.a;
-  m.centre[pa.ordinate] = sol.centre.o;
+  double c[3] = {f[0], f[1], f[2]};
+  c[pa.abscissa] = sol.centre.a;
+  c[pa.ordinate] = sol.centre.o;
+  m.centre = {c[0], c[1], c[2]};
   m.applicate = pa.applicate;
   m.turns = w.turn.value_or(0);
 }
@@ -266,6 +276,19 @@ NCOFFSET_INLINE_STEP void MotionBuilder::compensationSettings(const ModalState& 
   if (m_.has_tip) m_.tip = tipVector(modal.plane);
 }
 
+void MotionBuilder::plainSettings(const ModalState& modal) {
+  suppressed_ = false;
+  compensationSettings(modal);
+  full_length_ = tools_.lengthVector(modal.plane);
+  taken_up_ = equal(applied_offset_, full_length_);
+  // What build() sets for every block and buildPlain keeps: the same for every plain block.
+  m_.plane = modal.plane;
+  m_.feed_unit = modal.feed_unit;
+  m_.lead_change = 0;
+  m_.sar.kind = core::SarKind::None;
+  plain_settings_ = true;
+}
+
 Vec3 MotionBuilder::tipVector(Plane plane) {
   // P - S of the edge (tool::ToolSelection::tipVector) with the components on the axes the
   // block's frame mirrors inverted: mirroring a plane axis mirrors the effective cutting edge
@@ -282,16 +305,6 @@ Vec3 MotionBuilder::tipVector(Plane plane) {
     if (mirrored_[static_cast<size_t>(i)]) tip[i] = -tip[i];
   return tip;
 }
-
-namespace {
-
-// Beyond the machine's number range or not a number (|v| <= 1e9 is false for NaN). Without
-// branches: the usual block is within.
-inline bool outOfRange(const Vec3& p) {
-  return !(std::fabs(p.x) <= 1e9) | !(std::fabs(p.y) <= 1e9) | !(std::fabs(p.z) <= 1e9);
-}
-
-}  // namespace
 
 NCOFFSET_INLINE_STEP void MotionBuilder::checkRange(bool plain) const {
   const core::MotionBlock& m = m_;

@@ -4,7 +4,10 @@
 // machine's number range and hands it to the first stage. It owns the channel's position.
 #pragma once
 
+#include <cmath>
+
 #include "core/stage.hpp"
+#include "geom/arc.hpp"
 #include "interp/corner_stage.hpp"
 #include "interp/frame_state.hpp"
 #include "interp/machine_data.hpp"
@@ -36,6 +39,21 @@ class MotionBuilder {
   void setStart(const Vec3& mcs) { bcs_ = wcs_ = mcs; }
   // Builds the block's motion and hands it on. False: a zero-length linear block (no segment).
   bool build(const BlockWords& w, const ModalState& modal, const BlockContext& at);
+  // build() for a block whose words Interpreter::plainWord collected alone (X, Y, Z, G0..G3, F,
+  // CR=; every other word absent) under the interpreter's own modal state: without a frame (or
+  // the frame of the last motion) its target, the tool length and the compensation settings
+  // take the short way (motion_plain.cpp); anything else goes to build(), its twin
+  // (tests/interp/motion_fast_path_test.cpp).
+  bool buildPlain(const BlockWords& w, const ModalState& modal, const BlockContext& at);
+  // build() for a block of any words under the interpreter's own modal state (finishBlock):
+  // buildPlain when its words need nothing more (no G53/G153/SUPA, AC/IC/DAC/.., SAR, G63).
+  bool buildBlock(const BlockWords& w, const ModalState& modal, const BlockContext& at);
+  // Something other than a plain line ran (a block of other words, a subprogram return, a new
+  // run): the compensation settings, the tool length and the tool tip that buildPlain keeps in
+  // the block may have changed; the next plain block builds them anew.
+  void settingsMayChange() { plain_settings_ = false; }
+  // False: buildPlain and buildBlock are build() (tests compare whole runs both ways).
+  static inline bool short_way = true;
 
   // The last programmed point in the WCS ($P_EP) and the tool tip in the BCS.
   Vec3 wcs() const { return wcs_; }
@@ -70,12 +88,31 @@ class MotionBuilder {
   // G2/G3: end point and centre by geom::solveArc (PM-NC "Circular interpolation").
   void arc(const BlockWords& w, const ModalState& modal, const Vec3& from, bool plain,
            Vec3& target);
+  // arc()'s last step: the solution's end point and centre into the block (`f`: the start).
+  void arcEnd(const BlockWords& w, const geom::ArcSolution& sol, PlaneAxes pa, const double (&f)[3],
+              Vec3& target);
+  // arc() for a circle by CR= alone (no centre, AR=) whose end point is programmed (buildPlain).
+  void radiusArc(const BlockWords& w, const ModalState& modal, Vec3& target);
   // G0/G1: the tool length taken up by each axis the block moves (W1 2.1, spec §2.6). False
   // when the block moves nowhere.
   // A thread or tapping line (threads.cpp): its feed is the lead; G63 names the block's G1.
   void threadFeed(const BlockWords& w, const ModalState& modal, const Vec3& from, const Vec3& to);
   bool takeUpLength(const BlockWords& w, const ModalState& modal, bool plain, const Vec3& target);
   void compensationSettings(const ModalState& modal);
+  // buildPlain's steps (motion_plain.cpp): the target of the axis words without frame, and the
+  // linear block's tool length take-up; false when the block moves nowhere.
+  Vec3 plainTarget(const BlockWords& w, const ModalState& modal) const;
+  bool plainTakeUp(const BlockWords& w, const ModalState& modal, const Vec3& to);
+  // compensationSettings() for buildPlain, with the tool length vector it keeps.
+  void plainSettings(const ModalState& modal);
+  [[gnu::cold, noreturn]] static void targetAlarm(double value, int axis);
+  // Beyond the machine's number range or not a number (|v| <= 1e9 is false for NaN). Without
+  // branches: the usual block is within.
+  // Every axis as takeUpLength compares them (NaN is not equal).
+  static bool equal(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+  static bool outOfRange(const Vec3& p) {
+    return !(std::fabs(p.x) <= 1e9) | !(std::fabs(p.y) <= 1e9) | !(std::fabs(p.z) <= 1e9);
+  }
   // The axis is programmed incrementally in this block (G91, IC, DIC, RIC).
   static bool incremental(const BlockWords& w, const ModalState& modal, int axis);
   // SD42442: whether the programmed axis takes up a changed tool length in this block.
@@ -111,6 +148,13 @@ class MotionBuilder {
   Vec3 wcs_;
   Vec3 bcs_;
   core::ApproachPoints approach_points_;
+  // m_.trc, m_.has_tip, m_.tip and full_length_ were built by buildPlain from the interpreter's
+  // modal state and tool, and only plain lines ran since (settingsMayChange): they still hold.
+  // (So are m_.plane, m_.feed_unit, m_.lead_change, m_.sar.kind; the frame is the last motion's,
+  // the identity, and the modal motion no thread: only other lines change them.)
+  bool plain_settings_ = false;
+  Vec3 full_length_;       // tools_.lengthVector(plane) when plain_settings_
+  bool taken_up_ = false;  // applied_offset_ == full_length_: nothing to take up
 };
 
 }  // namespace ncoffset::interp

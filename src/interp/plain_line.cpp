@@ -59,6 +59,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainG(double value, bool is_int, Motion&
     return true;
   }
   if (value >= 40 && value <= 42) {
+    motion_.settingsMayChange();  // G group 7 is one of the kept compensation settings
     trc = value == 40   ? core::TrcMode::Off
           : value == 41 ? core::TrcMode::Left
                         : core::TrcMode::Right;
@@ -76,6 +77,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainGCode(unsigned long long g, Motion& 
     return true;
   }
   if (g - 40 > 2) return false;
+  motion_.settingsMayChange();               // G group 7 is one of the kept compensation settings
   trc = static_cast<core::TrcMode>(g - 40);  // G40 Off, G41 Left, G42 Right
   return true;
 }
@@ -94,7 +96,7 @@ NCOFFSET_INLINE_STEP void Interpreter::finishPlainBlock(int column) {
     threadLeadWords();  // CR= without G2/G3: the circle alarm
   bool moved = false;
   if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
-    moved = motion_.build(words_, modal_, {line_, file_, feed_before_, motion_before_});
+    moved = motion_.buildPlain(words_, modal_, {line_, file_, feed_before_, motion_before_});
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
   if (!moved) motion_.output().blockWithoutMotion();

@@ -25,6 +25,7 @@ void Interpreter::resetCalls() {
   mcall_ = {};
   modal_depth_ = 0;
   section_end_ = static_cast<size_t>(-1);
+  motion_.settingsMayChange();  // a new run: tool or machine data may have changed since
 }
 
 // CALL BLOCK <start> TO <end> (a section of this program) and CALL <name> BLOCK <start> TO
@@ -243,6 +244,7 @@ void Interpreter::enterSubprogram(std::string_view name, long long repeat,
 }
 
 void Interpreter::leaveSubprogram() {
+  motion_.settingsMayChange();  // SAVE restores the G groups (restoreSaved)
   CallFrame& f = call_frames_.back();
   // VAR parameters bound to an array element or an R parameter go back to the caller.
   std::vector<lang::Value> out;

@@ -53,6 +53,13 @@ double trcSide(const TrcSettings& t) {
   return t.radius < 0 ? -s : s;
 }
 
+// tangent(m, true) of the block `last` was noted from.
+Vec2 endTangent(const SmoothApproach::LastContour& last) {
+  if (last.motion != Motion::G2 && last.motion != Motion::G3) return unit(last.d);
+  const Vec2 t = geom::leftNormal(unit(last.d));
+  return last.motion == Motion::G3 ? t : -1.0 * t;
+}
+
 [[noreturn]] void sarAlarm(AlarmNumber number, const std::string& text, int line) {
   throw AlarmError(number, text, line);
 }
@@ -176,25 +183,34 @@ MotionBlock curveBlock(const MotionBlock& like, const Vec3& from, const Vec3& to
 
 }  // namespace
 
-NCOFFSET_INLINE_STEP void SmoothApproach::forward(const MotionBlock& m) {
-  // hasPlaneMotion(m) without its square root (asked for every block).
+NCOFFSET_INLINE_STEP void SmoothApproach::note(const MotionBlock& m) {
+  // hasPlaneMotion(m) without its square root (asked for every block); what tangent(m, true)
+  // needs of it kept with the same subtractions.
   PlaneAxes pa = planeAxes(m.plane);
-  if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > tol::kPoint ||
-      std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > tol::kPoint)
-    last_ = LastContour{true, m.plane, m.motion, m.start, m.end, m.centre};
+  const double da = m.end[pa.abscissa] - m.start[pa.abscissa];
+  const double d_o = m.end[pa.ordinate] - m.start[pa.ordinate];
+  if (isArc(m))
+    last_ = {
+        true,
+        m.motion,
+        {m.end[pa.abscissa] - m.centre[pa.abscissa], m.end[pa.ordinate] - m.centre[pa.ordinate]}};
+  else if (std::fabs(da) > tol::kPoint || std::fabs(d_o) > tol::kPoint)
+    last_ = {true, m.motion, {da, d_o}};
   last_trc_mode_ = m.trc.mode;
   last_trc_radius_ = m.trc.radius;
-  out_.motion(m);
 }
 
 void SmoothApproach::pass(const MotionBlock& m) {
-  forward(m);
+  note(m);
+  out_.motion(m);
 }
 
 core::Feedback SmoothApproach::motion(const MotionBlock& m) {
-  if (state_ == State::Idle && m.sar.kind == core::SarKind::None) {  // the usual block
-    forward(m);
-    return {};
+  if (state_ == State::Idle && m.sar.kind == core::SarKind::None) [[likely]] {  // the usual block
+    note(m);
+    // What the stages behind feed back (nothing: only this stage does) is this block's: the
+    // call is the function's last step, a jump without a frame of its own.
+    return out_.motion(m);
   }
   take(m);
   if (!has_feedback_) return {};
@@ -334,13 +350,7 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p4 = s.start;
-  MotionBlock last = s;
-  last.plane = last_.plane;
-  last.motion = last_.motion;
-  last.start = last_.start;
-  last.end = last_.end;
-  last.centre = last_.centre;
-  const Vec2 t = tangent(last, true);
+  const Vec2 t = endTangent(last_);
   TrcSettings active = s.trc;  // with G40 in the block: the side active before it
   if (s.trc.mode == TrcMode::Off) {
     active.mode = last_trc_mode_;

@@ -34,6 +34,15 @@ class SmoothApproach final : public core::Stage {
   // Nothing is held back (no approach waits for its contour).
   bool idle() const { return state_ == State::Idle; }
 
+  // The last block with plane motion that went through, as much as the retraction's tangent needs
+  // (copying whole blocks cost 100 instructions a block, its start, end and centre 10): its
+  // motion and the plane vector of a line's end - start or an arc's end - centre.
+  struct LastContour {
+    bool valid = false;
+    Motion motion = Motion::G1;
+    geom::Vec2 d;
+  };
+
  private:
   enum class State { Idle, WaitP4, WaitTangent };
 
@@ -41,8 +50,9 @@ class SmoothApproach final : public core::Stage {
   void retraction(const core::MotionBlock& m);
   void take(const core::MotionBlock& m);
   void pass(const core::MotionBlock& m);
-  // pass() inlined into motion() for the usual block (no call per block, docs/performance.md §31).
-  void forward(const core::MotionBlock& m);
+  // What the retraction needs of a block that went through (pass() and motion() for the usual
+  // block, docs/performance.md §31, §35).
+  void note(const core::MotionBlock& m);
 
   core::Stage& out_;
   State state_ = State::Idle;
@@ -50,15 +60,6 @@ class SmoothApproach final : public core::Stage {
   std::optional<core::MotionBlock> p4_;  // the block that supplies P4 (if not sar_)
   std::vector<core::MotionBlock> held_;  // geometry blocks between P4 and the tangent block
   int held_dummies_ = 0;                 // blocks without motion in between
-  // The last block with plane motion that went through (for the retraction's tangent).
-  // (Only what the tangent needs: copying whole blocks cost 100 instructions a block.)
-  // (A flag, not std::optional: filled field by field in place, once a block.)
-  struct LastContour {
-    bool valid = false;
-    Plane plane = Plane::G17;
-    Motion motion = Motion::G1;
-    Vec3 start, end, centre;
-  };
   LastContour last_;
   core::TrcMode last_trc_mode_ = core::TrcMode::Off;  // of the last block
   double last_trc_radius_ = 0;

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "ncoffset/alarm.hpp"
 
@@ -244,6 +247,22 @@ TEST(SolveArc, NotDefined14045) {
   ar_full.end = Vec2{0, 0};
   ar_full.ar = 90;
   EXPECT_NE(alarmOf(ar_full), 0);
+}
+
+// maxOf is std::fmax bit for bit (solveArc's tolerance and its root): ordinary values, equal
+// values of either sign, infinities and NaN in either place. Through volatile, so the compiler
+// cannot fold the library call with its own rules.
+TEST(SolveArc, MaxOfIsFmax) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double values[] = {0.0, -0.0, 1.0, -1.0, 0.01, 0.001 * 25, 1e-300, -1e300, inf, -inf, nan};
+  for (double x : values)
+    for (double y : values) {
+      volatile double a = x, b = y;
+      const double want = std::fmax(a, b), got = maxOf(a, b);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(want))
+          << x << ", " << y;
+    }
 }
 
 }  // namespace

@@ -11,10 +11,13 @@
 #include <gtest/gtest.h>
 
 #include <iterator>
+#include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "interp/motion_builder.hpp"
 #include "ncoffset/channel.hpp"
 
 namespace ncoffset {
@@ -32,11 +35,11 @@ struct Outcome {
   std::optional<Alarm> alarm;
 };
 
-Outcome run(const std::string& text) {
+Outcome run(const std::string& text, const std::filesystem::path& dir = {}) {
   Outcome r;
   CollectSink sink;
   Channel ch;
-  RunResult result = ch.runText("T.MPF", text, sink);
+  RunResult result = ch.runText("T.MPF", text, sink, dir);
   r.segments = sink.segments;
   r.alarm = result.alarm;
   return r;
@@ -49,10 +52,14 @@ void expectSameVec(const Vec3& a, const Vec3& b) {
 }
 
 // The fast way's outcome, after comparing it with the general way's.
-Outcome expectSame(const std::string& fast_text, const std::string& general_text) {
+// `general_builder`: the general way also builds every motion by MotionBuilder::build.
+Outcome expectSame(const std::string& fast_text, const std::string& general_text,
+                   const std::filesystem::path& dir = {}, bool general_builder = false) {
   SCOPED_TRACE(fast_text);
-  Outcome fast = run(fast_text);
-  const Outcome general = run(general_text);
+  Outcome fast = run(fast_text, dir);
+  interp::MotionBuilder::short_way = !general_builder;
+  const Outcome general = run(general_text, dir);
+  interp::MotionBuilder::short_way = true;
   EXPECT_EQ(fast.alarm.has_value(), general.alarm.has_value());
   if (fast.alarm.has_value() != general.alarm.has_value()) return fast;
   if (fast.alarm) {
@@ -230,6 +237,85 @@ TEST(FrontFastPath, LineEndsAsTheGeneralPath) {
     EXPECT_TRUE(o.alarm.has_value());
     EXPECT_EQ(o.segments.size(), clean ? 4u : 0u);
   }
+}
+
+// The motion builder keeps the compensation settings, the tool tip and the tool length vector of
+// the last plain block while only plain lines run (MotionBuilder::buildPlain, section 35): plain
+// lines between lines that change them (G41/G42/G40, OFFN=, DISC=, D, tool data, the plane,
+// CUTCONON, G450/G451, G91, G70, frames) must give what the same lines give when each one takes
+// the general path (` S=(0)`) and MotionBuilder::build, where the settings are built anew for
+// every block.
+TEST(FrontFastPath, PlainBlocksKeepTheSettingsAsTheGeneralPath) {
+  const char* const settings[] = {"G41",       "G42",
+                                  "G40",       "OFFN=1.5",
+                                  "DISC=2",    "D0",
+                                  "D1",        "G17",
+                                  "G18",       "G91",
+                                  "G90",       "G70",
+                                  "G71",       "G450",
+                                  "G451",      "CUTCONON",
+                                  "CUTCONOF",  "TRANS X5",
+                                  "MIRROR Y0", "G54",
+                                  "G500",      "$TC_DP6[1,1]=3",
+                                  "G0",        "G1"};
+  const char* const numbers[] = {"10", "-2.5", "0.125", "40", "-7", "0"};
+  unsigned seed = 2026;
+  auto next = [&](unsigned n) {
+    seed = seed * 1103515245u + 12345u;
+    return (seed >> 16) % n;
+  };
+  int with_segments = 0, with_alarm = 0;
+  for (int program = 0; program < 300; ++program) {
+    std::string fast = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n";
+    std::string general = fast;
+    for (unsigned k = 0, blocks = 5 + next(30); k < blocks; ++k) {
+      std::string block;
+      const unsigned kind = next(10);
+      if (kind < 3) {
+        block += settings[next(sizeof settings / sizeof *settings)];
+      } else {
+        block += kind == 3 ? (next(2) ? "G2" : "G3") : (next(4) ? "G1" : "G0");
+        for (const char* axis : {"X", "Y", "Z"}) {
+          if (kind != 3 && next(2) == 0) continue;  // a circle: its end point in any plane
+          block += ' ';
+          block += axis;
+          block += numbers[next(sizeof numbers / sizeof *numbers)];
+        }
+        if (kind == 3) block += " CR=500";
+      }
+      fast += block + "\n";
+      general += block + " S=(0)\n";
+    }
+    const Outcome o = expectSame(fast, general, {}, true);
+    with_segments += o.segments.size() > 8;
+    with_alarm += o.alarm.has_value();
+  }
+  EXPECT_GT(with_segments, 150);
+  EXPECT_GT(with_alarm, 10);
+}
+
+// A subprogram with SAVE gives back the G groups at its return (leaveSubprogram): the plain line
+// after it must not keep the settings its last plain line had.
+TEST(FrontFastPath, PlainBlockAfterASaveReturnAsTheGeneralPath) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "ncoffset_fast_path_save";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "PQ_KEEP.SPF") << "PROC PQ_KEEP SAVE\nG451 CUTCONON\nG1 X60 Y40\n"
+                                        "X80\nRET\n";
+  const std::string head = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=4\nT1 D1\nG0 X0 Y0 Z0 F100\n";
+  const char* const lines[] = {"G41 G1 X20 Y0", "X40", "PQ_KEEP", "X100 Y40",
+                               "Y100",          "X0",  "Y0",      "G40 X-10"};
+  std::string fast = head, general = head;
+  for (const char* line : lines) {
+    fast += line;
+    fast += '\n';
+    general += line;
+    general += " S=(0)\n";
+  }
+  const Outcome o = expectSame(fast, general, dir, true);
+  EXPECT_FALSE(o.alarm.has_value());
+  EXPECT_GT(o.segments.size(), 8u);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -7,29 +7,13 @@
 
 #include <vector>
 
+#include "interp/collect_stage.hpp"
 #include "ncoffset/alarm.hpp"
 
 namespace ncoffset::interp {
 namespace {
 
-// The stage behind the builder: keeps what it is given.
-class Collect final : public core::Stage {
- public:
-  std::vector<core::MotionBlock> blocks;
-  core::Feedback next;
-  core::Feedback motion(const core::MotionBlock& m) override {
-    blocks.push_back(m);
-    return next;
-  }
-  void warning(const core::MotionBlock&, int, const std::string&) override {}
-};
-
-struct Fixture {
-  Collect stage;
-  MachineData data;
-  FrameState frames;
-  tool::ToolSelection tools{32000};
-  MotionBuilder builder{stage, data, frames, tools};
+struct Fixture : BuilderRig {
   ModalState modal;
 
   Fixture() {

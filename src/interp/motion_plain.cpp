@@ -1,0 +1,140 @@
+// The motion builder's short way (docs/performance.md §35): a block of plain words (X, Y, Z,
+// G0..G3, F, CR= alone, as Interpreter::plainWord collects them) under the interpreter's modal
+// state, without a frame or with the frame of the last motion unchanged and no thread motion, is
+// built here without the steps its words cannot need (frame suppression, AC/IC/DC words, SAR,
+// G63, frame products). The compensation settings, the tool tip and the tool length vector stay
+// in the reused block while only plain lines without G40/G41/G42 run (settingsMayChange).
+// MotionBuilder::build is its twin: the same fields, the same values bit for bit, the same alarms
+// in the same order (tests/interp/motion_fast_path_test.cpp).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interp/motion_builder.hpp"
+#include "ncoffset/alarm.hpp"
+
+namespace ncoffset::interp {
+
+void MotionBuilder::targetAlarm(double value, int axis) {
+  raise(AlarmNumber::ValueRange,
+        fmt::format("value range exceeded: position {} of axis {}", value, "XYZ"[axis]));
+}
+
+// target() for axis words without AC/IC/DAC/..., from the last programmed point.
+[[gnu::always_inline]] inline Vec3 MotionBuilder::plainTarget(const BlockWords& w,
+                                                              const ModalState& modal) const {
+  Vec3 to = wcs_;
+  const bool inc = modal.incremental;
+  const double* factor = inc ? modal.diam_inc : modal.diam_abs;
+  // toMm: v * 1.0 is v bit for bit, so the inch factor needs no branch per axis.
+  const double unit = modal.units == Units::G70 || modal.units == Units::G700 ? 25.4 : 1.0;
+  auto axis = [&](int i, double& t) {
+    if (!w.axis[i]) return;
+    const double v = w.axis_value[i] * unit * factor[i];
+    t = inc ? t + v : v;
+    if (!(std::fabs(t) <= 1e9)) [[unlikely]]  // beyond, infinite or NaN: one comparison
+      targetAlarm(t, i);
+  };
+  axis(0, to.x);
+  axis(1, to.y);
+  axis(2, to.z);
+  return to;
+}
+
+// takeUpLength() without a frame, with the length vector kept since the settings were built.
+[[gnu::always_inline]] inline bool MotionBuilder::plainTakeUp(const BlockWords& w,
+                                                              const ModalState& modal,
+                                                              const Vec3& to) {
+  core::MotionBlock& m = m_;
+  m.centre = {};
+  m.applicate = 2;
+  m.turns = 0;
+  const Vec3 before = applied_offset_;
+  if (!taken_up_) [[unlikely]] {
+    const Vec3 full = full_length_;
+    for (int i = 0; i < 3; ++i)
+      if (w.axis[i] && applied_offset_[i] != full[i] && takesUpLength(w, modal, i))
+        applied_offset_[i] = full[i];
+    taken_up_ = equal(applied_offset_, full);
+  }
+  const Vec3 moved = (to + applied_offset_) - (bcs_ + before);
+  return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
+}
+
+void MotionBuilder::radiusArc(const BlockWords& w, const ModalState& modal, Vec3& target) {
+  const PlaneAxes pa = planeAxes(modal.plane);
+  const double f[3] = {wcs_.x, wcs_.y, wcs_.z};
+  const double t[3] = {target.x, target.y, target.z};
+  const geom::Vec2 start{f[pa.abscissa], f[pa.ordinate]}, end{t[pa.abscissa], t[pa.ordinate]};
+  arcEnd(w,
+         geom::arcByRadius(start, end, toMm(modal, *w.cr), m_.motion == Motion::G3,
+                           data_.get(md_circle_const_), data_.get(md_circle_factor_)),
+         pa, f, target);
+}
+
+bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
+                               const BlockContext& at) {
+  core::MotionBlock& m = m_;
+  // A frame (or a changed one: its start point, its copy into the block) or a thread motion
+  // (its lead): the general way. Only a line that is not plain changes them (plain lines
+  // program G0..G3 alone), so they are asked again only then.
+  if (!plain_settings_) [[unlikely]] {
+    if (!frames_.isIdentity() || m.frame.state() != frames_.blockFrame().state() ||
+        isThreadMotion(modal.motion) || !short_way)
+      return build(w, modal, at);
+    plainSettings(modal);
+  }
+  Vec3 to = plainTarget(w, modal);
+  m.motion = modal.motion;
+  m.line = at.line;
+  m.file = at.file;
+  m.start = bcs_;  // no frame: WCS = BCS
+  m.end = to;
+  m.has_feed = m.motion != Motion::G0;
+  if (m.has_feed && modal.feed <= 0)
+    raise(AlarmNumber::FeedNotProgrammed, "no feedrate programmed (F) for G1/G2/G3");
+  m.feed = m.has_feed ? modal.feed : 0;
+  // checkRange: the end point, and a circle's centre (rangeAlarm names the first beyond).
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+    // CR= with the end point in the plane and nothing else: solveArc's request is that alone.
+    const PlaneAxes pa = planeAxes(modal.plane);
+    if (w.cr && !w.ar && !(w.centre[0] || w.centre[1] || w.centre[2]) &&
+        (w.axis[pa.abscissa] || w.axis[pa.ordinate]))
+      radiusArc(w, modal, to);
+    else
+      arc(w, modal, wcs_, true, to);
+    if (outOfRange(m.end + applied_offset_) || outOfRange(m.centre)) [[unlikely]]
+      rangeAlarm(true);
+  } else {
+    if (!plainTakeUp(w, modal, to)) {
+      if (routed_) corner_.dropRequest();
+      wcs_ = to;
+      return false;  // zero-length block: no segment
+    }
+    if (outOfRange(m.end + applied_offset_)) [[unlikely]]
+      rangeAlarm(true);
+  }
+  m.tool_offset = applied_offset_;
+  ++m.seq;
+  const core::Feedback back = routed_ ? routedMotion(m) : next_.motion(m);
+  if (back.approach) [[unlikely]]
+    approach_points_ = *back.approach;
+  if (back.end_point) [[unlikely]]
+    to = *back.end_point;
+  bcs_ = wcs_ = to;
+  return true;
+}
+
+bool MotionBuilder::buildBlock(const BlockWords& w, const ModalState& modal,
+                               const BlockContext& at) {
+  using lang::AxisMode;
+  // Only these words make build() do more than buildPlain (centre words, CR=, AR= and TURN=
+  // are arc()'s in both).
+  const bool plain_words =
+      w.suppress_frames == 0 && w.sar == core::SarKind::None && !w.tapping_chuck &&
+      w.axis_mode[0] == AxisMode::Default && w.axis_mode[1] == AxisMode::Default &&
+      w.axis_mode[2] == AxisMode::Default && !w.disr && !w.discl && !w.disrp && !w.fad;
+  return plain_words ? buildPlain(w, modal, at) : build(w, modal, at);
+}
+
+}  // namespace ncoffset::interp
