@@ -10,9 +10,9 @@
 // simpleWords, a third way compared too.
 #include <gtest/gtest.h>
 
-#include <iterator>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
