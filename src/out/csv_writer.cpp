@@ -77,15 +77,28 @@ void CsvWriter::carry(LineMemo& m) {
 
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
   fmt::format_to(fmt::appender(w_.buf()), kHeader);
+  allocateRows();
+}
+
+// Room for the rows up to kRowsFlush and one row more (its 9 fields and the axes' fields).
+void CsvWriter::allocateRows() {
+  rows_.reset(new char[kRowsFlush + kMaxRow + axis_room_]);  // (not zeroed: written before read)
+  rows_end_ = rows_.get();
+  rows_flush_ = rows_.get() + kRowsFlush;
+}
+
+void CsvWriter::flushRows(bool sync) {
+  if (rows_end_ == rows_.get()) {
+    if (sync) w_.flush();
+    return;
+  }
+  w_.write(rows_.get(), static_cast<size_t>(rows_end_ - rows_.get()), sync);
+  rows_end_ = rows_.get();
 }
 
 void CsvWriter::segment(const Segment& s) {
-  // Written in place at the end of the buffer: room for 9 fields of at most 32 characters is
-  // reserved first (its capacity, not its size: the size is set once, after the row).
-  auto& b = w_.buf();
-  const size_t used = b.size();
-  b.reserve(used + kMaxRow + axis_room_);
-  char* const row = b.data() + used;
+  // Written in place at the end of the rows (room for one more: allocateRows).
+  char* const row = rows_end_;
   char* p = writeLine(row, s.line);
   *p++ = ',';
   static_assert(static_cast<int>(Motion::G0) == 0 && static_cast<int>(Motion::G3) == 3);
@@ -115,12 +128,13 @@ void CsvWriter::segment(const Segment& s) {
   if (axis_room_) [[unlikely]]
     p = writeAxes(p);
   *p++ = '\n';
-  b.resize(used + static_cast<size_t>(p - row));
-  w_.lineDone();
+  rows_end_ = p;
+  if (p >= rows_flush_) [[unlikely]]
+    flushRows();
 }
 
 void CsvWriter::finish(const Alarm*) {
-  w_.flush();
+  flushRows(true);
 }
 
 bool extendCsvHeader(BufferedWriter& w, AxisColumns& axes, const std::vector<std::string>& names) {
@@ -134,7 +148,10 @@ bool extendCsvHeader(BufferedWriter& w, AxisColumns& axes, const std::vector<std
 }
 
 void CsvWriter::axisNames(const std::vector<std::string>& names) {
-  if (extendCsvHeader(w_, axes_, names)) axis_room_ = 33 * names.size();
+  if (rows_end_ != rows_.get()) return;  // rows of an init file: keep the header
+  if (!extendCsvHeader(w_, axes_, names)) return;
+  axis_room_ = 33 * names.size();
+  allocateRows();
 }
 
 char* CsvWriter::writeAxes(char* p) const {
