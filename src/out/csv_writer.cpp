@@ -59,8 +59,9 @@ inline char* CsvWriter::writeLine(char* p, int line) {
     m.len = static_cast<size_t>(end - m.text);
     m.value = line >= 0 ? line : LineMemo::kNone;
   }
+  const size_t len = m.len;  // (read before the copy: a store through `p` may alias it)
   std::memcpy(p, m.text, sizeof m.text);
-  return p + m.len;
+  return p + len;
 }
 
 void CsvWriter::carry(LineMemo& m) {
@@ -100,20 +101,23 @@ void CsvWriter::segment(const Segment& s) {
   // Written in place at the end of the rows (room for one more: allocateRows).
   char* const row = rows_end_;
   char* p = writeLine(row, s.line);
-  *p++ = ',';
+  // (The motion read once: a store through `p` may alias the segment, §40.)
+  const Motion motion = s.motion;
   static_assert(static_cast<int>(Motion::G0) == 0 && static_cast<int>(Motion::G3) == 3);
-  if (s.motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call
-    *p++ = 'G';
-    *p++ = static_cast<char>('0' + static_cast<int>(s.motion));
+  if (motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call
+    const char field[4] = {',', 'G', static_cast<char>('0' + static_cast<int>(motion)), 0};
+    std::memcpy(p, field, 4);  // one store; the fourth byte is overwritten by the next field
+    p += 3;
   } else {  // G33, G331, G63, ...
-    for (const char* c = motionName(s.motion); *c; ++c) *p++ = *c;
+    *p++ = ',';
+    for (const char* c = motionName(motion); *c; ++c) *p++ = *c;
   }
   // (Written out, not a loop over an initializer list: that copied the three values first.)
   p = writeField(p, s.end.x);
   p = writeField(p, s.end.y);
   *p++ = ',';
   p = writeMemo(p, s.end.z, z_);  // z mostly as in the row before
-  if (s.motion == Motion::G2 || s.motion == Motion::G3) {
+  if (motion == Motion::G2 || motion == Motion::G3) {
     p = writeField(p, s.centre.x);
     p = writeField(p, s.centre.y);
     *p++ = ',';
