@@ -59,8 +59,9 @@ inline char* CsvWriter::writeLine(char* p, int line) {
     m.len = static_cast<size_t>(end - m.text);
     m.value = line >= 0 ? line : LineMemo::kNone;
   }
+  const size_t len = m.len;  // (read before the copy: a store through `p` may alias it)
   std::memcpy(p, m.text, sizeof m.text);
-  return p + m.len;
+  return p + len;
 }
 
 void CsvWriter::carry(LineMemo& m) {
@@ -77,30 +78,46 @@ void CsvWriter::carry(LineMemo& m) {
 
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
   fmt::format_to(fmt::appender(w_.buf()), kHeader);
+  allocateRows();
+}
+
+// Room for the rows up to kRowsFlush and one row more (its 9 fields and the axes' fields).
+void CsvWriter::allocateRows() {
+  rows_.reset(new char[kRowsFlush + kMaxRow + axis_room_]);  // (not zeroed: written before read)
+  rows_end_ = rows_.get();
+  rows_flush_ = rows_.get() + kRowsFlush;
+}
+
+void CsvWriter::flushRows(bool sync) {
+  if (rows_end_ == rows_.get()) {
+    if (sync) w_.flush();
+    return;
+  }
+  w_.write(rows_.get(), static_cast<size_t>(rows_end_ - rows_.get()), sync);
+  rows_end_ = rows_.get();
 }
 
 void CsvWriter::segment(const Segment& s) {
-  // Written in place at the end of the buffer: room for 9 fields of at most 32 characters is
-  // reserved first (its capacity, not its size: the size is set once, after the row).
-  auto& b = w_.buf();
-  const size_t used = b.size();
-  b.reserve(used + kMaxRow + axis_room_);
-  char* const row = b.data() + used;
+  // Written in place at the end of the rows (room for one more: allocateRows).
+  char* const row = rows_end_;
   char* p = writeLine(row, s.line);
-  *p++ = ',';
+  // (The motion read once: a store through `p` may alias the segment, §40.)
+  const Motion motion = s.motion;
   static_assert(static_cast<int>(Motion::G0) == 0 && static_cast<int>(Motion::G3) == 3);
-  if (s.motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call
-    *p++ = 'G';
-    *p++ = static_cast<char>('0' + static_cast<int>(s.motion));
+  if (motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call
+    const char field[4] = {',', 'G', static_cast<char>('0' + static_cast<int>(motion)), 0};
+    std::memcpy(p, field, 4);  // one store; the fourth byte is overwritten by the next field
+    p += 3;
   } else {  // G33, G331, G63, ...
-    for (const char* c = motionName(s.motion); *c; ++c) *p++ = *c;
+    *p++ = ',';
+    for (const char* c = motionName(motion); *c; ++c) *p++ = *c;
   }
   // (Written out, not a loop over an initializer list: that copied the three values first.)
   p = writeField(p, s.end.x);
   p = writeField(p, s.end.y);
   *p++ = ',';
   p = writeMemo(p, s.end.z, z_);  // z mostly as in the row before
-  if (s.motion == Motion::G2 || s.motion == Motion::G3) {
+  if (motion == Motion::G2 || motion == Motion::G3) {
     p = writeField(p, s.centre.x);
     p = writeField(p, s.centre.y);
     *p++ = ',';
@@ -115,12 +132,13 @@ void CsvWriter::segment(const Segment& s) {
   if (axis_room_) [[unlikely]]
     p = writeAxes(p);
   *p++ = '\n';
-  b.resize(used + static_cast<size_t>(p - row));
-  w_.lineDone();
+  rows_end_ = p;
+  if (p >= rows_flush_) [[unlikely]]
+    flushRows();
 }
 
 void CsvWriter::finish(const Alarm*) {
-  w_.flush();
+  flushRows(true);
 }
 
 bool extendCsvHeader(BufferedWriter& w, AxisColumns& axes, const std::vector<std::string>& names) {
@@ -134,7 +152,10 @@ bool extendCsvHeader(BufferedWriter& w, AxisColumns& axes, const std::vector<std
 }
 
 void CsvWriter::axisNames(const std::vector<std::string>& names) {
-  if (extendCsvHeader(w_, axes_, names)) axis_room_ = 33 * names.size();
+  if (rows_end_ != rows_.get()) return;  // rows of an init file: keep the header
+  if (!extendCsvHeader(w_, axes_, names)) return;
+  axis_room_ = 33 * names.size();
+  allocateRows();
 }
 
 char* CsvWriter::writeAxes(char* p) const {

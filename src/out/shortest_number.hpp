@@ -10,6 +10,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace ncoffset::out {
 
@@ -70,6 +73,18 @@ struct TrailingZeros {
 };
 inline constexpr TrailingZeros kTrailingZeros{};
 
+// v truncated to an int; for |v| >= 2^31 and NaN a value that does not equal v (x86: INT_MIN,
+// the conversion's "indefinite integer", never equal to v unless v is -2^31 itself). So a whole
+// number's test needs no range test before it: a double equal to an int is written as that
+// int's digits by {fmt} too (fixed notation up to 1e16; docs/performance.md §40).
+inline int truncatedInt(double v) {
+#if defined(__SSE2__)
+  return _mm_cvttsd_si32(_mm_set_sd(v));
+#else
+  return std::fabs(v) < 2147483647.0 ? static_cast<int>(v) : 0;  // 0: v is no int or 0 itself
+#endif
+}
+
 // The fast path of writeShortest, inline for writers that put out many numbers per row: v in
 // fixed notation when it is a whole number or has at most six decimals and lies below 1e9 (the
 // coordinates, feeds and centres of real programs), else nullptr.
@@ -83,8 +98,7 @@ inline constexpr TrailingZeros kTrailingZeros{};
 // becomes 0, so it prints as 0): no absolute value, no test of the sign before it is known
 // to be needed (docs/performance.md §37).
 inline char* writeFixed(char* out, double v) {
-  if (!(std::fabs(v) < 1e9)) return nullptr;  // also NaN
-  const auto whole = static_cast<int>(v);     // |v| < 1e9 < 2^31
+  const int whole = truncatedInt(v);
   if (static_cast<double>(whole) == v) {
     auto u = static_cast<unsigned>(whole);
     if (whole < 0) {
@@ -94,7 +108,8 @@ inline char* writeFixed(char* out, double v) {
     return writeUnsigned(out, u);
   }
   const double a = std::fabs(v);
-  if (a < 1e-4) return nullptr;  // {fmt} writes these with an exponent
+  if (!(a < 1e9)) return nullptr;  // also NaN
+  if (a < 1e-4) return nullptr;    // {fmt} writes these with an exponent
   // Signed 64-bit conversions (one instruction each): m < 1e15 + 1.
   const auto m = static_cast<long long>(a * 1e6 + 0.5);
   if (static_cast<double>(m) / 1e6 != a) return nullptr;  // more than six decimals

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "ncoffset/path.hpp"
@@ -36,6 +37,16 @@ class BufferedWriter {
       buf_.clear();
     }
   }
+  // The buffer and then `n` characters at `text` to the file (whole lines: a writer's own
+  // buffer of rows, CsvWriter), without copying them into the buffer first; `sync`: flushed
+  // (as flush()).
+  void write(const char* text, size_t n, bool sync) {
+    wrote_ = true;
+    if (buf_.size()) std::fwrite(buf_.data(), 1, buf_.size(), f_);
+    buf_.clear();
+    std::fwrite(text, 1, n, f_);
+    if (sync) std::fflush(f_);
+  }
   fmt::memory_buffer& buf() { return buf_; }
   // Whether anything reached the file (a header can no longer change).
   bool wrote() const { return wrote_; }
@@ -51,6 +62,9 @@ class BufferedWriter {
 class CsvWriter : public PathSink {
  public:
   explicit CsvWriter(std::FILE* f);
+  ~CsvWriter() override { flushRows(true); }
+  CsvWriter(const CsvWriter&) = delete;
+  CsvWriter& operator=(const CsvWriter&) = delete;
   void segment(const Segment& s) override;
   void finish(const Alarm* alarm) override;
   // The additional axes: columns after feed (docs/output-formats.md).
@@ -78,7 +92,17 @@ class CsvWriter : public PathSink {
   char* writeLine(char* p, int line);
   [[gnu::noinline]] static void carry(LineMemo& m);  // the next line after a 9
   char* writeAxes(char* p) const;
+  // The rows are written at rows_end_ in a buffer of their own (a pointer to move instead of the
+  // memory buffer's size and capacity to test twice a row, docs/performance.md §40) and go to
+  // w_ once past kRowsFlush or at the end; the header stays in w_ before them.
+  static constexpr size_t kRowsFlush = size_t{1} << 16;
+  void allocateRows();
+  // The rows (and what w_ holds before them) to the file; `sync`: flushed, as w_.flush().
+  [[gnu::noinline]] void flushRows(bool sync = false);
   BufferedWriter w_;
+  std::unique_ptr<char[]> rows_;
+  char* rows_end_ = nullptr;
+  char* rows_flush_ = nullptr;  // rows_.get() + kRowsFlush
   AxisColumns axes_;
   size_t axis_room_ = 0;  // characters the axis fields of a row may take
   Memo z_, feed_;

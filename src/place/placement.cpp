@@ -40,12 +40,23 @@ NCOFFSET_INLINE_STEP Segment Placement::toSegment(const MotionBlock& m, const G&
   return s;
 }
 
+// The unit vector of axis `applicate`: G17's Z as constants, without the vector built in memory
+// to set one of its coordinates (docs/performance.md §40).
+namespace {
+NCOFFSET_INLINE_STEP Vec3 unitNormal(int applicate) {
+  if (applicate == 2) [[likely]]
+    return {0, 0, 1};
+  Vec3 normal;
+  normal[applicate] = 1;
+  return normal;
+}
+}  // namespace
+
 // toSegment of a block itself in MCS without a frame or P - S: its points with the tool offset,
 // each written once (docs/performance.md §37).
 NCOFFSET_INLINE_STEP Segment Placement::blockSegment(const MotionBlock& m) const {
   const Vec3& o = m.tool_offset;
-  Vec3 normal;
-  normal[m.applicate] = 1;
+  const Vec3 normal = unitNormal(m.applicate);
   const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
   return Segment{m.line, m.file,  m.motion, m.start + o, m.end + o,  arc ? m.centre + o : Vec3{},
                  normal, m.turns, m.feed,   m.feed_unit, m.has_feed, m.lead_change};
@@ -64,8 +75,7 @@ NCOFFSET_INLINE_STEP Segment Placement::planeSegment(const MotionBlock& like,
                    {0, 0, 1},      e.turns,       like.feed,
                    like.feed_unit, like.has_feed, like.lead_change};
   }
-  Vec3 normal;
-  normal[like.applicate] = 1;
+  const Vec3 normal = unitNormal(like.applicate);
   const Motion line =
       like.motion == Motion::G2 || like.motion == Motion::G3 ? Motion::G1 : like.motion;
   return Segment{like.line, like.file,  line,      start,          end,           Vec3{},

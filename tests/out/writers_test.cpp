@@ -202,6 +202,29 @@ TEST(CsvWriter, LineNumbersAsTheGeneralPath) {
   EXPECT_EQ(readAll(f.get()), expected);
 }
 
+// The rows' own buffer (§40): the additional axes' columns join the header while no row was
+// written (none pending either), the header stays once a row is pending; rows and header in
+// order, nothing lost at the end without finish().
+TEST(CsvWriter, AxisColumnsOnlyBeforeTheFirstRow) {
+  File f(std::tmpfile()), g(std::tmpfile());
+  ASSERT_TRUE(f && g);
+  {
+    CsvWriter w(f.get());
+    w.axisNames({"A"});
+    w.axes({1, 0, {90}});
+    w.segment(line(1, Motion::G1, {1, 2, 3}, 100, true));
+  }
+  EXPECT_EQ(readAll(f.get()), kHeader + ",a\n1,G1,1,2,3,,,,100,90\n");
+  {
+    CsvWriter w(g.get());
+    w.segment(line(1, Motion::G0, {1, 2, 3}));
+    w.axisNames({"A"});
+    w.segment(line(2, Motion::G0, {4, 5, 6}));
+    w.finish(nullptr);
+  }
+  EXPECT_EQ(readAll(g.get()), kHeader + "\n1,G0,1,2,3,,,,\n2,G0,4,5,6,,,,\n");
+}
+
 // ---- JSON Lines ------------------------------------------------------------------------------
 
 FileNames names() {
