@@ -38,12 +38,18 @@ bool hasPlaneMotion(const MotionBlock& m) {
   return isArc(m) || geom::length(inPlane(m, m.end) - inPlane(m, m.start)) > tol::kPoint;
 }
 
-// The unit tangent of a block in its plane at its start or end.
-Vec2 tangent(const MotionBlock& m, bool at_end) {
-  if (!isArc(m)) return unit(inPlane(m, m.end) - inPlane(m, m.start));
-  const Vec2 r = unit(inPlane(m, at_end ? m.end : m.start) - inPlane(m, m.centre));
-  const Vec2 t = geom::leftNormal(r);
-  return m.motion == Motion::G3 ? t : -1.0 * t;
+// The unit tangent of an element in its plane from its motion and `d`: end - start for a line,
+// the radius vector (point - centre) at the point for an arc.
+Vec2 tangentOf(Motion motion, Vec2 d) {
+  if (motion != Motion::G2 && motion != Motion::G3) return unit(d);
+  const Vec2 t = geom::leftNormal(unit(d));
+  return motion == Motion::G3 ? t : -1.0 * t;
+}
+
+// The unit tangent of a block in its plane at its start.
+Vec2 startTangent(const MotionBlock& m) {
+  return tangentOf(
+      m.motion, inPlane(m, isArc(m) ? m.start : m.end) - inPlane(m, isArc(m) ? m.centre : m.start));
 }
 
 // +1: compensation left of the travel, -1: right, 0: off (spec §5.1, a negative value flips).
@@ -176,26 +182,34 @@ MotionBlock curveBlock(const MotionBlock& like, const Vec3& from, const Vec3& to
 
 }  // namespace
 
-NCOFFSET_INLINE_STEP void SmoothApproach::forward(const MotionBlock& m) {
-  // hasPlaneMotion(m) without its square root (asked for every block).
+NCOFFSET_INLINE_STEP core::Feedback SmoothApproach::forward(const MotionBlock& m) {
+  // hasPlaneMotion(m) without its square root (asked for every block); the differences are what
+  // the retraction's tangent needs (tangentOf).
   PlaneAxes pa = planeAxes(m.plane);
-  if (isArc(m) || std::fabs(m.end[pa.abscissa] - m.start[pa.abscissa]) > tol::kPoint ||
-      std::fabs(m.end[pa.ordinate] - m.start[pa.ordinate]) > tol::kPoint)
-    last_ = LastContour{true, m.plane, m.motion, m.start, m.end, m.centre};
+  const int a = pa.abscissa, o = pa.ordinate;
+  if (isArc(m)) {
+    last_ = LastContour{true, m.motion, {m.end[a] - m.centre[a], m.end[o] - m.centre[o]}};
+  } else {
+    const Vec2 d{m.end[a] - m.start[a], m.end[o] - m.start[o]};
+    if (std::fabs(d.a) > tol::kPoint || std::fabs(d.o) > tol::kPoint)
+      last_ = LastContour{true, m.motion, d};
+  }
   last_trc_mode_ = m.trc.mode;
   last_trc_radius_ = m.trc.radius;
-  out_.motion(m);
+  return out_.motion(m);
 }
 
 void SmoothApproach::pass(const MotionBlock& m) {
   forward(m);
 }
 
-core::Feedback SmoothApproach::motion(const MotionBlock& m) {
-  if (state_ == State::Idle && m.sar.kind == core::SarKind::None) {  // the usual block
-    forward(m);
-    return {};
-  }
+NCOFFSET_ONE_CALL core::Feedback SmoothApproach::motion(const MotionBlock& m) {
+  if (state_ == State::Idle && m.sar.kind == core::SarKind::None)  // the usual block
+    return forward(m);
+  return general(m);
+}
+
+core::Feedback SmoothApproach::general(const MotionBlock& m) {
   take(m);
   if (!has_feedback_) return {};
   has_feedback_ = false;
@@ -285,7 +299,7 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p0 = s.start, p4 = p4b.end;
-  const Vec2 t = tangent(tangent_block, false);
+  const Vec2 t = startTangent(tangent_block);
   const Shape shape = construct(s, s.trc, inPlane(s, p4), t, inPlane(s, p0), true);
   // Applicates (details §4.2): DISCL / DISRP measured along +applicate from the plane of P4,
   // or absolute with =AC(..); a missing DISCL counts as 0.
@@ -334,13 +348,7 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p4 = s.start;
-  MotionBlock last = s;
-  last.plane = last_.plane;
-  last.motion = last_.motion;
-  last.start = last_.start;
-  last.end = last_.end;
-  last.centre = last_.centre;
-  const Vec2 t = tangent(last, true);
+  const Vec2 t = tangentOf(last_.motion, last_.d);
   TrcSettings active = s.trc;  // with G40 in the block: the side active before it
   if (s.trc.mode == TrcMode::Off) {
     active.mode = last_trc_mode_;

@@ -37,12 +37,17 @@ class SmoothApproach final : public core::Stage {
  private:
   enum class State { Idle, WaitP4, WaitTangent };
 
+  // motion() for a SAR block or while an approach waits; out of line, so that motion() has no
+  // stack frame and hands the usual block on as a tail call.
+  [[gnu::noinline]] core::Feedback general(const core::MotionBlock& m);
   void approach(const core::MotionBlock& tangent_block);
   void retraction(const core::MotionBlock& m);
   void take(const core::MotionBlock& m);
   void pass(const core::MotionBlock& m);
   // pass() inlined into motion() for the usual block (no call per block, docs/performance.md §31).
-  void forward(const core::MotionBlock& m);
+  // Returns what the stage behind feeds back: nothing, as RadiusCompensation::motion never
+  // does, so that motion() hands the block on as a tail call (§38).
+  core::Feedback forward(const core::MotionBlock& m);
 
   core::Stage& out_;
   State state_ = State::Idle;
@@ -50,14 +55,14 @@ class SmoothApproach final : public core::Stage {
   std::optional<core::MotionBlock> p4_;  // the block that supplies P4 (if not sar_)
   std::vector<core::MotionBlock> held_;  // geometry blocks between P4 and the tangent block
   int held_dummies_ = 0;                 // blocks without motion in between
-  // The last block with plane motion that went through (for the retraction's tangent).
-  // (Only what the tangent needs: copying whole blocks cost 100 instructions a block.)
-  // (A flag, not std::optional: filled field by field in place, once a block.)
+  // The last block with plane motion that went through, as much as the retraction's tangent
+  // needs: its motion and the in-plane vector end - start (line) or end - centre (arc). (Whole
+  // blocks cost 100 instructions a block, start/end/centre 9 doubles; the differences are the
+  // ones the plane-motion test computes anyway, docs/performance.md §38.)
   struct LastContour {
     bool valid = false;
-    Plane plane = Plane::G17;
     Motion motion = Motion::G1;
-    Vec3 start, end, centre;
+    geom::Vec2 d;
   };
   LastContour last_;
   core::TrcMode last_trc_mode_ = core::TrcMode::Off;  // of the last block
