@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #include "core/inline_step.hpp"
@@ -188,14 +189,13 @@ NCOFFSET_INLINE_STEP core::Feedback SmoothApproach::forward(const MotionBlock& m
   PlaneAxes pa = planeAxes(m.plane);
   const int a = pa.abscissa, o = pa.ordinate;
   if (isArc(m)) {
-    last_ = LastContour{true, m.motion, {m.end[a] - m.centre[a], m.end[o] - m.centre[o]}};
+    last_ = LastContour{m.motion, {m.end[a] - m.centre[a], m.end[o] - m.centre[o]}};
   } else {
     const Vec2 d{m.end[a] - m.start[a], m.end[o] - m.start[o]};
     if (std::fabs(d.a) > tol::kPoint || std::fabs(d.o) > tol::kPoint)
-      last_ = LastContour{true, m.motion, d};
+      last_ = LastContour{m.motion, d};
   }
-  last_trc_mode_ = m.trc.mode;
-  last_trc_radius_ = m.trc.radius;
+  std::memcpy(&last_trc_, &m.trc, sizeof last_trc_);
   return out_.motion(m);
 }
 
@@ -342,7 +342,7 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
 
 void SmoothApproach::retraction(const MotionBlock& s) {
   const SarRequest& q = s.sar;
-  if (!last_.valid)
+  if (!last_.valid())
     sarAlarm(AlarmNumber::SarNoDirection,
              "SAR: no valid retraction direction: no contour block before the SAR block", s.line);
   PlaneAxes pa = planeAxes(s.plane);
@@ -351,8 +351,8 @@ void SmoothApproach::retraction(const MotionBlock& s) {
   const Vec2 t = tangentOf(last_.motion, last_.d);
   TrcSettings active = s.trc;  // with G40 in the block: the side active before it
   if (s.trc.mode == TrcMode::Off) {
-    active.mode = last_trc_mode_;
-    active.radius = last_trc_radius_;
+    active.mode = last_trc_.mode;
+    active.radius = last_trc_.radius;
   }
   if (!q.plane_axis &&
       (q.side == SarSide::G143 || (q.side == SarSide::G140 && trcSide(active) == 0)))

@@ -8,6 +8,8 @@
 // Readings where the manuals are silent: tests/programs/sar/README.md, docs/smooth-approach.md.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -38,7 +40,7 @@ class SmoothApproach final : public core::Stage {
   enum class State { Idle, WaitP4, WaitTangent };
 
   // motion() for a SAR block or while an approach waits; out of line, so that motion() has no
-  // stack frame and hands the usual block on as a tail call.
+  // stack frame and hands the usual block on with one call.
   [[gnu::noinline]] core::Feedback general(const core::MotionBlock& m);
   void approach(const core::MotionBlock& tangent_block);
   void retraction(const core::MotionBlock& m);
@@ -46,7 +48,7 @@ class SmoothApproach final : public core::Stage {
   void pass(const core::MotionBlock& m);
   // pass() inlined into motion() for the usual block (no call per block, docs/performance.md §31).
   // Returns what the stage behind feeds back: nothing, as RadiusCompensation::motion never
-  // does, so that motion() hands the block on as a tail call (§38).
+  // does, so that motion() hands the block on as its one call (§38).
   core::Feedback forward(const core::MotionBlock& m);
 
   core::Stage& out_;
@@ -59,14 +61,22 @@ class SmoothApproach final : public core::Stage {
   // needs: its motion and the in-plane vector end - start (line) or end - centre (arc). (Whole
   // blocks cost 100 instructions a block, start/end/centre 9 doubles; the differences are the
   // ones the plane-motion test computes anyway, docs/performance.md §38.)
+  // None yet while d is NaN (no flag stored per block; a block's end and an arc's centre are
+  // finite, MotionBuilder::checkRange).
   struct LastContour {
-    bool valid = false;
     Motion motion = Motion::G1;
-    geom::Vec2 d;
+    geom::Vec2 d{std::nan(""), 0};
+    bool valid() const { return !std::isnan(d.a); }
   };
   LastContour last_;
-  core::TrcMode last_trc_mode_ = core::TrcMode::Off;  // of the last block
-  double last_trc_radius_ = 0;
+  // Mode and radius of the last block: the head of its TrcSettings, copied as one 16-byte piece
+  // (two instructions a block instead of four, §38).
+  struct TrcHead {
+    core::TrcMode mode;
+    double radius;
+  };
+  static_assert(offsetof(TrcHead, radius) == offsetof(core::TrcSettings, radius));
+  TrcHead last_trc_{core::TrcMode::Off, 0};
   core::ApproachPoints points_;  // of the last evaluated approach
   core::Feedback feedback_;      // for the block being taken
   bool has_feedback_ = false;
