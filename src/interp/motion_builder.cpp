@@ -17,6 +17,7 @@ const core::BlockFrame MotionBuilder::kNoFrame;
 MotionBuilder::MotionBuilder(core::Stage& next, const MachineData& data, const FrameState& frames,
                              const tool::ToolSelection& tools)
     : next_(next),
+      sar_(dynamic_cast<trc::SmoothApproach*>(&next)),
       corner_(next),
       data_(data),
       frames_(frames),
@@ -112,7 +113,7 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   checkRange(plain);
   sarRequest(w, modal, at);
   ++m.seq;
-  core::Feedback back = routed_ ? routedMotion(m) : next_.motion(m);
+  core::Feedback back = routed_ ? routedMotion(m) : handOn(m);
   if (back.approach) approach_points_ = *back.approach;
   if (back.end_point) to = *back.end_point;  // implicit retraction end point
   bcs_ = toBcs(plain, to);
@@ -122,6 +123,16 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
 
 Vec3 MotionBuilder::programmedTarget(const BlockWords& w, const ModalState& modal) const {
   return target(w, modal, w.suppress_frames != 0 ? bcs_ : wcs_);
+}
+
+// The SAR stage's motion() for the usual block is note() and the stage behind's motion()
+// (SmoothApproach::forward): done here, the block skips the stage's entry and its virtual call.
+NCOFFSET_INLINE_STEP core::Feedback MotionBuilder::handOn(const core::MotionBlock& m) {
+  if (sar_ != nullptr && !sar_->needs(m)) {
+    sar_->note(m);
+    return sar_->next().motion(m);
+  }
+  return next_.motion(m);
 }
 
 core::Feedback MotionBuilder::routedMotion(const core::MotionBlock& m) {

@@ -10,6 +10,7 @@
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
 #include "tool/tool_selection.hpp"
+#include "trc/smooth_approach.hpp"
 
 namespace ncoffset::interp {
 
@@ -93,8 +94,13 @@ class MotionBuilder {
 
   static const core::BlockFrame kNoFrame;
   core::Feedback routedMotion(const core::MotionBlock& m);
+  // next_.motion(m), past the SAR stage when it has nothing to do with the block (§38).
+  core::Feedback handOn(const core::MotionBlock& m);
 
   core::Stage& next_;
+  // next_ when it is the SAR stage (the channel's chain): the usual block goes past it to the
+  // compensation, with the stage's note of it; nullptr: every block goes to next_.motion().
+  trc::SmoothApproach* sar_;
   CornerStage corner_;
   bool routed_ = false;  // corner_ holds a block or has a request: motions go through it
   const MachineData& data_;

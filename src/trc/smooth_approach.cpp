@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstring>
 #include <utility>
 
 #include "core/inline_step.hpp"
@@ -184,18 +183,7 @@ MotionBlock curveBlock(const MotionBlock& like, const Vec3& from, const Vec3& to
 }  // namespace
 
 NCOFFSET_INLINE_STEP core::Feedback SmoothApproach::forward(const MotionBlock& m) {
-  // hasPlaneMotion(m) without its square root (asked for every block); the differences are what
-  // the retraction's tangent needs (tangentOf).
-  PlaneAxes pa = planeAxes(m.plane);
-  const int a = pa.abscissa, o = pa.ordinate;
-  if (isArc(m)) {
-    last_ = LastContour{m.motion, {m.end[a] - m.centre[a], m.end[o] - m.centre[o]}};
-  } else {
-    const Vec2 d{m.end[a] - m.start[a], m.end[o] - m.start[o]};
-    if (std::fabs(d.a) > tol::kPoint || std::fabs(d.o) > tol::kPoint)
-      last_ = LastContour{m.motion, d};
-  }
-  std::memcpy(&last_trc_, &m.trc, sizeof last_trc_);
+  note(m);
   return out_.motion(m);
 }
 

@@ -10,11 +10,13 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <optional>
 #include <vector>
 
 #include "core/stage.hpp"
 #include "geom/contour.hpp"
+#include "geom/tolerance.hpp"
 
 namespace ncoffset::trc {
 
@@ -35,6 +37,15 @@ class SmoothApproach final : public core::Stage {
   void flush() override;
   // Nothing is held back (no approach waits for its contour).
   bool idle() const { return state_ == State::Idle; }
+
+  // The usual block past the stage (MotionBuilder::handOn, docs/performance.md §38): a block
+  // that does not need motion() (no SAR word, no approach waiting) may go to next() directly
+  // after note(); that is what motion() does with it.
+  bool needs(const core::MotionBlock& m) const {
+    return state_ != State::Idle || m.sar.kind != core::SarKind::None;
+  }
+  inline void note(const core::MotionBlock& m);
+  core::Stage& next() const { return out_; }
 
  private:
   enum class State { Idle, WaitP4, WaitTangent };
@@ -81,5 +92,21 @@ class SmoothApproach final : public core::Stage {
   core::Feedback feedback_;      // for the block being taken
   bool has_feedback_ = false;
 };
+
+// What a later retraction needs of a block that goes through: its TRC mode and radius, and for
+// a block with plane motion (hasPlaneMotion without its square root) the difference tangentOf
+// takes.
+void SmoothApproach::note(const core::MotionBlock& m) {
+  PlaneAxes pa = planeAxes(m.plane);
+  const int a = pa.abscissa, o = pa.ordinate;
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+    last_ = LastContour{m.motion, {m.end[a] - m.centre[a], m.end[o] - m.centre[o]}};
+  } else {
+    const geom::Vec2 d{m.end[a] - m.start[a], m.end[o] - m.start[o]};
+    if (std::fabs(d.a) > geom::tol::kPoint || std::fabs(d.o) > geom::tol::kPoint)
+      last_ = LastContour{m.motion, d};
+  }
+  std::memcpy(&last_trc_, &m.trc, sizeof last_trc_);
+}
 
 }  // namespace ncoffset::trc
