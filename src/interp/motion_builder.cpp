@@ -125,16 +125,6 @@ Vec3 MotionBuilder::programmedTarget(const BlockWords& w, const ModalState& moda
   return target(w, modal, w.suppress_frames != 0 ? bcs_ : wcs_);
 }
 
-// The SAR stage's motion() for the usual block is note() and the stage behind's motion()
-// (SmoothApproach::forward): done here, the block skips the stage's entry and its virtual call.
-NCOFFSET_INLINE_STEP core::Feedback MotionBuilder::handOn(const core::MotionBlock& m) {
-  if (sar_ != nullptr && !sar_->needs(m)) {
-    sar_->note(m);
-    return sar_->next().motion(m);
-  }
-  return next_.motion(m);
-}
-
 core::Feedback MotionBuilder::routedMotion(const core::MotionBlock& m) {
   core::Feedback back = corner_.motion(m);
   routed_ = !corner_.idle();

@@ -119,4 +119,15 @@ class MotionBuilder {
   core::ApproachPoints approach_points_;
 };
 
+// The SAR stage's motion() for the usual block is note() and the stage behind's motion()
+// (SmoothApproach::forward): done here, the block skips the stage's entry and its virtual call.
+// (In the header: every place that hands a built block on takes it, docs/performance.md §38.)
+inline core::Feedback MotionBuilder::handOn(const core::MotionBlock& m) {
+  if (sar_ != nullptr && !sar_->needs(m)) {
+    sar_->note(m);
+    return sar_->next().motion(m);
+  }
+  return next_.motion(m);
+}
+
 }  // namespace ncoffset::interp
