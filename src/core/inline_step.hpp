@@ -5,3 +5,12 @@
 #pragma once
 
 #define NCOFFSET_INLINE_STEP [[gnu::always_inline]] inline
+
+// NCOFFSET_ONE_CALL marks a per-block function that forwards through a virtual call: GCC would
+// speculate that the target is of the caller's own class and unroll the forwarding, testing the
+// vtable at each level; the forward stays one call (docs/performance.md §38).
+#if defined(__GNUC__) && !defined(__clang__)
+#define NCOFFSET_ONE_CALL __attribute__((optimize("no-devirtualize-speculatively")))
+#else
+#define NCOFFSET_ONE_CALL
+#endif

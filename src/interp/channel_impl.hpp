@@ -6,20 +6,13 @@
 #include <memory>
 #include <variant>
 
+#include "core/inline_step.hpp"
 #include "interp/diameter_sink.hpp"
 #include "interp/interpreter.hpp"
 #include "ncoffset/channel.hpp"
 #include "place/placement.hpp"
 #include "trc/radius_compensation.hpp"
 #include "trc/smooth_approach.hpp"
-
-// GCC speculates that a sink's target is another SwitchSink and unrolls the forwarding several
-// levels deep (13 instructions more per segment in the benchmark): the forward is one call.
-#if defined(__GNUC__) && !defined(__clang__)
-#define NCOFFSET_ONE_CALL __attribute__((optimize("no-devirtualize-speculatively")))
-#else
-#define NCOFFSET_ONE_CALL
-#endif
 
 namespace ncoffset {
 
@@ -35,6 +28,8 @@ class SwitchSink final : public PathSink {
   const trc::SmoothApproach* sar = nullptr;
   const interp::Interpreter* interp = nullptr;
 
+  // (NCOFFSET_ONE_CALL: GCC speculated that the target is another SwitchSink and unrolled the
+  // forwarding several levels deep, 13 instructions more per segment in the benchmark.)
   NCOFFSET_ONE_CALL void segment(const Segment& s) override {
     if (waiting_) [[unlikely]]
       release(placement->seq());

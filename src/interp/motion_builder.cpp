@@ -17,6 +17,7 @@ const core::BlockFrame MotionBuilder::kNoFrame;
 MotionBuilder::MotionBuilder(core::Stage& next, const MachineData& data, const FrameState& frames,
                              const tool::ToolSelection& tools)
     : next_(next),
+      sar_(dynamic_cast<trc::SmoothApproach*>(&next)),
       corner_(next),
       data_(data),
       frames_(frames),
@@ -113,7 +114,7 @@ bool MotionBuilder::build(const BlockWords& w, const ModalState& modal, const Bl
   checkRange(plain);
   sarRequest(w, modal, at);
   ++m.seq;
-  core::Feedback back = routed_ ? routedMotion(m) : next_.motion(m);
+  core::Feedback back = routed_ ? routedMotion(m) : handOn(m);
   if (back.approach) approach_points_ = *back.approach;
   if (back.end_point) to = *back.end_point;  // implicit retraction end point
   bcs_ = toBcs(plain, to);

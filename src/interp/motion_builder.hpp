@@ -13,6 +13,7 @@
 #include "interp/machine_data.hpp"
 #include "interp/modal_state.hpp"
 #include "tool/tool_selection.hpp"
+#include "trc/smooth_approach.hpp"
 
 namespace ncoffset::interp {
 
@@ -130,8 +131,13 @@ class MotionBuilder {
 
   static const core::BlockFrame kNoFrame;
   core::Feedback routedMotion(const core::MotionBlock& m);
+  // next_.motion(m), past the SAR stage when it has nothing to do with the block (§38).
+  core::Feedback handOn(const core::MotionBlock& m);
 
   core::Stage& next_;
+  // next_ when it is the SAR stage (the channel's chain): the usual block goes past it to the
+  // compensation, with the stage's note of it; nullptr: every block goes to next_.motion().
+  trc::SmoothApproach* sar_;
   CornerStage corner_;
   bool routed_ = false;  // corner_ holds a block or has a request: motions go through it
   const MachineData& data_;
@@ -156,5 +162,16 @@ class MotionBuilder {
   Vec3 full_length_;       // tools_.lengthVector(plane) when plain_settings_
   bool taken_up_ = false;  // applied_offset_ == full_length_: nothing to take up
 };
+
+// The SAR stage's motion() for the usual block is note() and the stage behind's motion()
+// (SmoothApproach::forward): done here, the block skips the stage's entry and its virtual call.
+// (In the header: every place that hands a built block on takes it, docs/performance.md §38.)
+inline core::Feedback MotionBuilder::handOn(const core::MotionBlock& m) {
+  if (sar_ != nullptr && !sar_->needs(m)) {
+    sar_->note(m);
+    return sar_->next().motion(m);
+  }
+  return next_.motion(m);
+}
 
 }  // namespace ncoffset::interp

@@ -116,7 +116,7 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
   }
   m.tool_offset = applied_offset_;
   ++m.seq;
-  const core::Feedback back = routed_ ? routedMotion(m) : next_.motion(m);
+  const core::Feedback back = routed_ ? routedMotion(m) : handOn(m);
   if (back.approach) [[unlikely]]
     approach_points_ = *back.approach;
   if (back.end_point) [[unlikely]]

@@ -38,12 +38,18 @@ bool hasPlaneMotion(const MotionBlock& m) {
   return isArc(m) || geom::length(inPlane(m, m.end) - inPlane(m, m.start)) > tol::kPoint;
 }
 
-// The unit tangent of a block in its plane at its start or end.
-Vec2 tangent(const MotionBlock& m, bool at_end) {
-  if (!isArc(m)) return unit(inPlane(m, m.end) - inPlane(m, m.start));
-  const Vec2 r = unit(inPlane(m, at_end ? m.end : m.start) - inPlane(m, m.centre));
-  const Vec2 t = geom::leftNormal(r);
-  return m.motion == Motion::G3 ? t : -1.0 * t;
+// The unit tangent of an element in its plane from its motion and `d`: end - start for a line,
+// the radius vector (point - centre) at the point for an arc.
+Vec2 tangentOf(Motion motion, Vec2 d) {
+  if (motion != Motion::G2 && motion != Motion::G3) return unit(d);
+  const Vec2 t = geom::leftNormal(unit(d));
+  return motion == Motion::G3 ? t : -1.0 * t;
+}
+
+// The unit tangent of a block in its plane at its start.
+Vec2 startTangent(const MotionBlock& m) {
+  return tangentOf(
+      m.motion, inPlane(m, isArc(m) ? m.start : m.end) - inPlane(m, isArc(m) ? m.centre : m.start));
 }
 
 // +1: compensation left of the travel, -1: right, 0: off (spec §5.1, a negative value flips).
@@ -51,13 +57,6 @@ double trcSide(const TrcSettings& t) {
   if (t.mode == TrcMode::Off || std::fabs(t.radius) <= tol::kPoint) return 0;
   double s = t.mode == TrcMode::Left ? 1.0 : -1.0;
   return t.radius < 0 ? -s : s;
-}
-
-// tangent(m, true) of the block `last` was noted from.
-Vec2 endTangent(const SmoothApproach::LastContour& last) {
-  if (last.motion != Motion::G2 && last.motion != Motion::G3) return unit(last.d);
-  const Vec2 t = geom::leftNormal(unit(last.d));
-  return last.motion == Motion::G3 ? t : -1.0 * t;
 }
 
 [[noreturn]] void sarAlarm(AlarmNumber number, const std::string& text, int line) {
@@ -183,35 +182,22 @@ MotionBlock curveBlock(const MotionBlock& like, const Vec3& from, const Vec3& to
 
 }  // namespace
 
-NCOFFSET_INLINE_STEP void SmoothApproach::note(const MotionBlock& m) {
-  // hasPlaneMotion(m) without its square root (asked for every block); what tangent(m, true)
-  // needs of it kept with the same subtractions.
-  PlaneAxes pa = planeAxes(m.plane);
-  const double da = m.end[pa.abscissa] - m.start[pa.abscissa];
-  const double d_o = m.end[pa.ordinate] - m.start[pa.ordinate];
-  if (isArc(m))
-    last_ = {
-        true,
-        m.motion,
-        {m.end[pa.abscissa] - m.centre[pa.abscissa], m.end[pa.ordinate] - m.centre[pa.ordinate]}};
-  else if (std::fabs(da) > tol::kPoint || std::fabs(d_o) > tol::kPoint)
-    last_ = {true, m.motion, {da, d_o}};
-  last_trc_mode_ = m.trc.mode;
-  last_trc_radius_ = m.trc.radius;
+NCOFFSET_INLINE_STEP core::Feedback SmoothApproach::forward(const MotionBlock& m) {
+  note(m);
+  return out_.motion(m);
 }
 
 void SmoothApproach::pass(const MotionBlock& m) {
-  note(m);
-  out_.motion(m);
+  forward(m);
 }
 
-core::Feedback SmoothApproach::motion(const MotionBlock& m) {
-  if (state_ == State::Idle && m.sar.kind == core::SarKind::None) [[likely]] {  // the usual block
-    note(m);
-    // What the stages behind feed back (nothing: only this stage does) is this block's: the
-    // call is the function's last step, a jump without a frame of its own.
-    return out_.motion(m);
-  }
+NCOFFSET_ONE_CALL core::Feedback SmoothApproach::motion(const MotionBlock& m) {
+  if (state_ == State::Idle && m.sar.kind == core::SarKind::None)  // the usual block
+    return forward(m);
+  return general(m);
+}
+
+core::Feedback SmoothApproach::general(const MotionBlock& m) {
   take(m);
   if (!has_feedback_) return {};
   has_feedback_ = false;
@@ -301,7 +287,7 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p0 = s.start, p4 = p4b.end;
-  const Vec2 t = tangent(tangent_block, false);
+  const Vec2 t = startTangent(tangent_block);
   const Shape shape = construct(s, s.trc, inPlane(s, p4), t, inPlane(s, p0), true);
   // Applicates (details §4.2): DISCL / DISRP measured along +applicate from the plane of P4,
   // or absolute with =AC(..); a missing DISCL counts as 0.
@@ -344,17 +330,17 @@ void SmoothApproach::approach(const MotionBlock& tangent_block) {
 
 void SmoothApproach::retraction(const MotionBlock& s) {
   const SarRequest& q = s.sar;
-  if (!last_.valid)
+  if (!last_.valid())
     sarAlarm(AlarmNumber::SarNoDirection,
              "SAR: no valid retraction direction: no contour block before the SAR block", s.line);
   PlaneAxes pa = planeAxes(s.plane);
   const int app = pa.applicate;
   const Vec3 p4 = s.start;
-  const Vec2 t = endTangent(last_);
+  const Vec2 t = tangentOf(last_.motion, last_.d);
   TrcSettings active = s.trc;  // with G40 in the block: the side active before it
   if (s.trc.mode == TrcMode::Off) {
-    active.mode = last_trc_mode_;
-    active.radius = last_trc_radius_;
+    active.mode = last_trc_.mode;
+    active.radius = last_trc_.radius;
   }
   if (!q.plane_axis &&
       (q.side == SarSide::G143 || (q.side == SarSide::G140 && trcSide(active) == 0)))

@@ -105,6 +105,18 @@ TEST(SmoothApproach, G247HelixAndTheApproachPoints) {
   expectVec(done.approach->aep, 40, -10, 0);
 }
 
+// G148 G141 G340 DISR=5 DISCL=3 where the tool stands, feed 400.
+core::MotionBlock g148Line(Program& p, int no) {
+  core::MotionBlock s = p.line(no, p.at.x, p.at.y, p.at.z);
+  s.sar.kind = core::SarKind::Line148;
+  s.sar.side = core::SarSide::G141;
+  s.sar.has_disr = s.sar.has_discl = true;
+  s.sar.disr = 5;
+  s.sar.discl = 3;
+  s.sar.feed_value = s.sar.feed_before = 400;
+  return s;
+}
+
 TEST(SmoothApproach, RetractionWithoutEndPointFeedsBackWhereItEnds) {
   // G148 G141 G340 DISR=5 DISCL=3 without any geometry axis after G1 X40 Y0 (t = (1,0), no
   // compensation): P3 = P4 + DISR t = (45,0), P2.app = 0 + 3; without an axis the retraction
@@ -116,20 +128,45 @@ TEST(SmoothApproach, RetractionWithoutEndPointFeedsBackWhereItEnds) {
   p.at = {0, 0, 0};
   p.feed = 400;
   EXPECT_FALSE(sar.motion(p.line(10, 40, 0)).end_point);
-  core::MotionBlock s = p.line(11, 40, 0);
-  s.sar.kind = core::SarKind::Line148;
-  s.sar.side = core::SarSide::G141;
-  s.sar.has_disr = s.sar.has_discl = true;
-  s.sar.disr = 5;
-  s.sar.discl = 3;
-  s.sar.feed_value = s.sar.feed_before = 400;
-  const core::Feedback back = sar.motion(s);
+  const core::Feedback back = sar.motion(g148Line(p, 11));
   ASSERT_TRUE(back.end_point);
   expectVec(*back.end_point, 45, 0, 3);
   EXPECT_FALSE(back.approach);
   ASSERT_EQ(out.blocks.size(), 2u);
   expectRow(out.blocks[1], 11, Motion::G1, 45, 0, 3);  // D': P4 -> P3, a sloped line
   expectVec(out.blocks[1].start, 40, 0, 0);
+}
+
+// The retraction's tangent comes from what the stage keeps of the last block with plane motion
+// (its motion and end - centre / end - start, docs/performance.md §38), not from the blocks
+// after it that move only the applicate or less than the point tolerance in the plane.
+TEST(SmoothApproach, RetractionTakesTheTangentOfTheLastBlockWithPlaneMotion) {
+  // From (40,0): G3 to (50,10) about (40,10) ends in direction +Y, G2 to (50,-10) about
+  // (40,-10) in -Y, G1 to (50,0) in +X. Then Z-1 and a step of 1e-7 in X (no plane motion):
+  // P3 = P4 + DISR t, P2 = P3 + DISCL along Z.
+  struct Case {
+    Motion motion;
+    double x, y, cx, cy;  // the last contour block (cx, cy unused for the line)
+    double p3x, p3y;
+  };
+  for (const Case& c :
+       {Case{Motion::G3, 50, 10, 40, 10, 50, 15}, Case{Motion::G2, 50, -10, 40, -10, 50, -15},
+        Case{Motion::G1, 50, 0, 0, 0, 55, 0}}) {
+    Collect out;
+    SmoothApproach sar(out);
+    Program p;
+    p.at = {40, 0, 0};
+    p.feed = 400;
+    sar.motion(c.motion == Motion::G1 ? p.line(10, c.x, c.y)
+                                      : p.arc(10, c.motion, c.x, c.y, c.cx, c.cy));
+    sar.motion(p.line(11, c.x, c.y, -1));
+    sar.motion(p.line(12, c.x + 1e-7, c.y, -1));
+    const core::Feedback back = sar.motion(g148Line(p, 13));
+    ASSERT_TRUE(back.end_point);
+    expectVec(*back.end_point, c.p3x + 1e-7, c.p3y, 2);
+    ASSERT_EQ(out.blocks.size(), 4u);
+    expectRow(out.blocks[3], 13, Motion::G1, c.p3x + 1e-7, c.p3y, 2);
+  }
 }
 
 TEST(SmoothApproach, NoBlockAfterTheApproachIsAlarm10744) {
