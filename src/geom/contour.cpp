@@ -104,6 +104,13 @@ Vec2 tangentAt(const Element& e, Vec2 p) {
 }
 
 namespace {
+// std::fmax(0.0, v) without the call to libm: the same for every v a difference of two squares
+// (or products of a value with itself) can be: a NaN gives 0 as with fmax, and such a
+// difference is never -0 (x - y is -0 only for x = -0; a square is +0 at the least).
+inline double atLeastZero(double v) {
+  return v > 0 ? v : 0.0;
+}
+
 // The points where the lines and circles of e1 and e2 (an arc: its circle through p0) cross,
 // each passed to point(p, u) with u the fraction on e1 for two lines (else NaN: the caller
 // computes it). One generator for intersect and filteredCrossings, so that both compute every
@@ -131,7 +138,7 @@ void crossingPoints(const Element& e1, const Element& e2, const Param& q1, const
     double disc = b * b - cc;  // r^2 - (distance of the centre from the line)^2
     // Missing the circle by no more than tol::kPoint: touching it.
     if (disc < -2 * r * tol::kPoint) return;
-    double s = std::sqrt(std::fmax(0.0, disc));
+    double s = std::sqrt(atLeastZero(disc));
     for (double t : {-b - s, -b + s}) {
       point(l.p0 + t * d, kNoFraction);
       if (s == 0) break;
@@ -147,7 +154,7 @@ void crossingPoints(const Element& e1, const Element& e2, const Param& q1, const
   double h2 = r1 * r1 - a * a;
   // Passing each other by no more than about tol::kPoint: touching.
   if (h2 < -2 * tol::kPoint * r1 * r2 / (r1 + r2)) return;
-  double h = std::sqrt(std::fmax(0.0, h2));
+  double h = std::sqrt(atLeastZero(h2));
   Vec2 m = e1.c + (a / dist) * dc;
   Vec2 perp = leftNormal((1.0 / dist) * dc);
   for (double sgn : {1.0, -1.0}) {
