@@ -127,6 +127,19 @@ check("success: the variables written", read(d, "v.json").startswith(b"{"), read
 check("success: permissions kept", os.stat(target).st_mode & 0o777 == 0o640, oct(os.stat(target).st_mode))
 check("success: no temporary file", not leftovers(d), leftovers(d))
 
+# A hard link of the replaced file keeps its old contents (the target is exchanged with the
+# temporary file, then the old contents' temporary name removed: docs/robustness.md).
+d = fresh()
+target = os.path.join(d, "out.csv")
+with open(target, "wb") as f:
+    f.write(b"old content\n")
+os.link(target, os.path.join(d, "keep.csv"))
+p = run(d, "P.MPF", "-o", "out.csv")
+check("hard link: exit 0", p.returncode == 0, p.stderr)
+check("hard link: the target replaced", read(d, "out.csv").startswith(b"line,motion,"))
+check("hard link: the link keeps the old contents", read(d, "keep.csv") == b"old content\n")
+check("hard link: no temporary file", not leftovers(d), leftovers(d))
+
 # A target name near NAME_MAX still gets a temporary file name that fits beside it.
 long_name = "L" * 250 + ".csv"
 p = run(d, "P.MPF", "-o", long_name)

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 #include "file_identity.hpp"
@@ -113,9 +114,19 @@ bool OutputFile::close(std::string& error) {
   return true;
 }
 
+// An existing file is exchanged with the temporary one, which then holds the old contents and is
+// removed: as atomic as a rename, but a rename onto an existing file makes ext4 write the new
+// file's blocks out at once (auto_da_alloc), 2.7 ms for the 2.8 MB CSV of a 100,000-block run,
+// a sixth of its time (docs/performance.md §41). Power loss is not covered either way
+// (docs/robustness.md). Without a file to replace, or where the file system cannot exchange, a
+// rename.
 bool OutputFile::publish(std::string& error) {
   if (temp_.empty()) return true;
-  if (::rename(temp_.c_str(), target_.c_str()) != 0) return fail(error, errno);
+  if (::renameat2(AT_FDCWD, temp_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) == 0) {
+    ::unlink(temp_.c_str());  // the old contents
+  } else if (::rename(temp_.c_str(), target_.c_str()) != 0) {
+    return fail(error, errno);
+  }
   temp_.clear();
   return true;
 }
