@@ -216,9 +216,7 @@ NCOFFSET_INLINE_STEP bool MotionBuilder::takeUpLength(const BlockWords& w, const
   // SD42442 = 0: an incrementally programmed axis does not take up a changed length (only the
   // programmed path is traversed); asked only where the length changed.
   if (plain) {
-    for (int i = 0; i < 3; ++i)
-      if (w.axis[i] && applied_offset_[i] != full[i] && takesUpLength(w, modal, i))
-        applied_offset_[i] = full[i];
+    takeUpAxes(w, modal, full);
   } else {
     const Mat3& l = frame().linear;
     for (int k = 0; k < 3; ++k)
@@ -227,8 +225,7 @@ NCOFFSET_INLINE_STEP bool MotionBuilder::takeUpLength(const BlockWords& w, const
             applied_offset_[k] != full[k] && takesUpLength(w, modal, i))
           applied_offset_[k] = full[k];
   }
-  const Vec3 moved = (toBcs(plain, target) + applied_offset_) - (bcs_ + before);
-  return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
+  return moves((toBcs(plain, target) + applied_offset_) - (bcs_ + before));
 }
 
 bool MotionBuilder::incremental(const BlockWords& w, const ModalState& modal, int axis) {

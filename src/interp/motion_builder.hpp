@@ -107,10 +107,17 @@ class MotionBuilder {
   // compensationSettings() for buildPlain, with the tool length vector it keeps.
   void plainSettings(const ModalState& modal);
   [[gnu::cold, noreturn]] static void targetAlarm(double value, int axis);
-  // Beyond the machine's number range or not a number (|v| <= 1e9 is false for NaN). Without
-  // branches: the usual block is within.
+  // Without a frame: each programmed BCS axis takes up the length `full` if it may (SD42442).
+  void takeUpAxes(const BlockWords& w, const ModalState& modal, const Vec3& full);
+  // The block moves the tool (BCS plus tool length) by more than 1e-12 mm on some axis.
+  static bool moves(const Vec3& moved) {
+    return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 &&
+             std::fabs(moved.z) < 1e-12);
+  }
   // Every axis as takeUpLength compares them (NaN is not equal).
   static bool equal(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+  // Beyond the machine's number range or not a number (|v| <= 1e9 is false for NaN). Without
+  // branches: the usual block is within.
   static bool outOfRange(const Vec3& p) {
     return !(std::fabs(p.x) <= 1e9) | !(std::fabs(p.y) <= 1e9) | !(std::fabs(p.z) <= 1e9);
   }
@@ -172,6 +179,13 @@ inline core::Feedback MotionBuilder::handOn(const core::MotionBlock& m) {
     return sar_->next().motion(m);
   }
   return next_.motion(m);
+}
+
+inline void MotionBuilder::takeUpAxes(const BlockWords& w, const ModalState& modal,
+                                      const Vec3& full) {
+  for (int i = 0; i < 3; ++i)
+    if (w.axis[i] && applied_offset_[i] != full[i] && takesUpLength(w, modal, i))
+      applied_offset_[i] = full[i];
 }
 
 }  // namespace ncoffset::interp

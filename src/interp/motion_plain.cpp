@@ -51,14 +51,10 @@ void MotionBuilder::targetAlarm(double value, int axis) {
   m.turns = 0;
   const Vec3 before = applied_offset_;
   if (!taken_up_) [[unlikely]] {
-    const Vec3 full = full_length_;
-    for (int i = 0; i < 3; ++i)
-      if (w.axis[i] && applied_offset_[i] != full[i] && takesUpLength(w, modal, i))
-        applied_offset_[i] = full[i];
-    taken_up_ = equal(applied_offset_, full);
+    takeUpAxes(w, modal, full_length_);
+    taken_up_ = equal(applied_offset_, full_length_);
   }
-  const Vec3 moved = (to + applied_offset_) - (bcs_ + before);
-  return !(std::fabs(moved.x) < 1e-12 && std::fabs(moved.y) < 1e-12 && std::fabs(moved.z) < 1e-12);
+  return moves((to + applied_offset_) - (bcs_ + before));
 }
 
 void MotionBuilder::radiusArc(const BlockWords& w, const ModalState& modal, Vec3& target) {

@@ -23,19 +23,26 @@ namespace ncoffset::interp {
 // any alarm).
 NCOFFSET_INLINE_STEP bool Interpreter::plainWord(std::string_view name, double value, bool is_int,
                                                  Motion& motion, core::TrcMode& trc) {
-  if (name.size() != 1) {
-    if (name != "CR" || words_.cr || vars_.find(name)) return false;
-    words_.cr = value;  // the circle radius (extendedWord)
-    return true;
-  }
+  if (name.size() != 1) return name == "CR" && plainRadius(value);
   const char c = name[0];
   if (c >= 'X' && c <= 'Z') return plainAxis(c - 'X', value);
   if (c == 'G') return plainG(value, is_int, motion, trc);
-  if (c == 'F' && value >= 0 && value <= 1e9) {
-    words_.f = value;
-    return true;
-  }
-  return false;
+  return c == 'F' && plainFeed(value);
+}
+
+// F of plainWord and plainLineWord: false beyond 0..1e9, where collectWord raises the alarm.
+NCOFFSET_INLINE_STEP bool Interpreter::plainFeed(double value) {
+  if (!(value >= 0 && value <= 1e9)) return false;
+  words_.f = value;
+  return true;
+}
+
+// CR= of plainWord and plainLineWord, the circle radius (extendedWord): false when programmed
+// before in the block or when a variable CR exists, for collectWord to decide.
+NCOFFSET_INLINE_STEP bool Interpreter::plainRadius(double value) {
+  if (words_.cr || vars_.find("CR")) return false;
+  words_.cr = value;
+  return true;
 }
 
 // An axis word X, Y or Z (axis 0..2) of plainWord; false if the axis was programmed before
@@ -162,16 +169,13 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
     if (!plainGCode(digits.mantissa, motion, trc)) return false;
   } else if (c == 'F') {
     ++p;
-    if (!scanLineNumber(p, value, is_int) || !(value >= 0 && value <= 1e9)) return false;
-    words_.f = value;
+    if (!scanLineNumber(p, value, is_int) || !plainFeed(value)) return false;
   } else if (c == 'C' && p[1] == 'R' && p[2] == '=') {
     p += 3;
     if (!scanLineNumber(p, value, is_int)) return false;
     // A blank or the end must follow (any other character up to the blank ends no word, so
     // the next word's scan refuses it).
-    if (static_cast<unsigned char>(*p) > ' ') return false;
-    if (words_.cr || vars_.find("CR")) return false;
-    words_.cr = value;  // the circle radius (extendedWord)
+    if (static_cast<unsigned char>(*p) > ' ' || !plainRadius(value)) return false;
   } else {
     return false;
   }
@@ -245,8 +249,6 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLine(std::string_view text, bool end
   return false;
 }
 
-// The block loop (here, beside the plain line, which it inlines: a call a line costs the saving
-// of six registers).
 // The state a run starts from.
 void Interpreter::startRun(LoadedProgram& program, bool init_file) {
   init_file_ = init_file;
@@ -265,6 +267,8 @@ void Interpreter::startRun(LoadedProgram& program, bool init_file) {
   words_plain_ = false;
 }
 
+// The block loop (here, beside the plain line, which it inlines: a call a line costs the saving
+// of six registers).
 void Interpreter::run(LoadedProgram& program, bool init_file) {
   startRun(program, init_file);
   std::string_view text;

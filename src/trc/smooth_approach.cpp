@@ -192,8 +192,7 @@ void SmoothApproach::pass(const MotionBlock& m) {
 }
 
 NCOFFSET_ONE_CALL core::Feedback SmoothApproach::motion(const MotionBlock& m) {
-  if (state_ == State::Idle && m.sar.kind == core::SarKind::None)  // the usual block
-    return forward(m);
+  if (!needs(m)) return forward(m);  // the usual block
   return general(m);
 }
 
