@@ -6,7 +6,7 @@
 #include <vector>
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include <immintrin.h>
 #endif
 
 #include "lang/parser.hpp"
@@ -65,67 +65,79 @@ bool mayHoldHead(std::string_view s) {
 }
 
 #if defined(__SSE2__)
-// The newlines of the 16 characters at `s` whose line is not the usual line of mayHoldHead's
-// first test (an upper-case letter other than N, then a digit), as bits; reads s[0..17].
-int unusualLineStarts(const char* s, __m128i& newlines) {
-  const auto load = [](const char* p) {
-    return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
-  };
-  const __m128i after = load(s + 1), second = load(s + 2);
-  newlines = _mm_cmpeq_epi8(load(s), _mm_set1_epi8('\n'));
-  const __m128i letter = _mm_sub_epi8(after, _mm_set1_epi8('A'));  // 0..25 for A..Z
-  const __m128i upper =
-      _mm_andnot_si128(_mm_cmpeq_epi8(after, _mm_set1_epi8('N')),
-                       _mm_cmpeq_epi8(_mm_min_epu8(letter, _mm_set1_epi8(25)), letter));
-  const __m128i digit = _mm_sub_epi8(second, _mm_set1_epi8('0'));  // 0..9 for 0..9
-  const __m128i is_digit = _mm_cmpeq_epi8(_mm_min_epu8(digit, _mm_set1_epi8(9)), digit);
-  return _mm_movemask_epi8(_mm_andnot_si128(_mm_and_si128(upper, is_digit), newlines));
-}
+// The vector operations of the usual-line scan, for 16 characters (SSE2) and, where the processor
+// has it, 32 (AVX2): the scan below is written once for both.
+struct Sse2 {
+  using V = __m128i;
+  static constexpr size_t kWidth = 16;
+  static V load(const char* p) { return _mm_loadu_si128(reinterpret_cast<const V*>(p)); }
+  static V set(char c) { return _mm_set1_epi8(c); }
+  static V zero() { return _mm_setzero_si128(); }
+  static V eq(V a, V b) { return _mm_cmpeq_epi8(a, b); }
+  static V sub(V a, V b) { return _mm_sub_epi8(a, b); }
+  static V add(V a, V b) { return _mm_add_epi8(a, b); }
+  static V min(V a, V b) { return _mm_min_epu8(a, b); }
+  static V andV(V a, V b) { return _mm_and_si128(a, b); }
+  static V andNot(V a, V b) { return _mm_andnot_si128(a, b); }
+  static unsigned mask(V a) { return static_cast<unsigned>(_mm_movemask_epi8(a)); }
+  // The sum of the bytes of -a (the lanes count newlines as -1 each).
+  static long long sumNegated(V a) {
+    const V s8 = _mm_sad_epu8(sub(zero(), a), zero());
+    return _mm_cvtsi128_si32(s8) + _mm_cvtsi128_si32(_mm_srli_si128(s8, 8));
+  }
+};
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define NCOFFSET_AVX2 [[gnu::target("avx2")]]
+struct Avx2 {
+  using V = __m256i;
+  static constexpr size_t kWidth = 32;
+  NCOFFSET_AVX2 static V load(const char* p) {
+    return _mm256_loadu_si256(reinterpret_cast<const V*>(p));
+  }
+  NCOFFSET_AVX2 static V set(char c) { return _mm256_set1_epi8(c); }
+  NCOFFSET_AVX2 static V zero() { return _mm256_setzero_si256(); }
+  NCOFFSET_AVX2 static V eq(V a, V b) { return _mm256_cmpeq_epi8(a, b); }
+  NCOFFSET_AVX2 static V sub(V a, V b) { return _mm256_sub_epi8(a, b); }
+  NCOFFSET_AVX2 static V add(V a, V b) { return _mm256_add_epi8(a, b); }
+  NCOFFSET_AVX2 static V min(V a, V b) { return _mm256_min_epu8(a, b); }
+  NCOFFSET_AVX2 static V andV(V a, V b) { return _mm256_and_si256(a, b); }
+  NCOFFSET_AVX2 static V andNot(V a, V b) { return _mm256_andnot_si256(a, b); }
+  NCOFFSET_AVX2 static unsigned mask(V a) { return static_cast<unsigned>(_mm256_movemask_epi8(a)); }
+  NCOFFSET_AVX2 static long long sumNegated(V a) {
+    const V s8 = _mm256_sad_epu8(sub(zero(), a), zero());
+    return _mm256_extract_epi64(s8, 0) + _mm256_extract_epi64(s8, 1) + _mm256_extract_epi64(s8, 2) +
+           _mm256_extract_epi64(s8, 3);
+  }
+};
 #endif
 
-// From the line at `pos`, the first line that mayHoldHead's first test does not pass over
-// (the usual line, G1 X10, which can hold no label and no control keyword), or the last line
-// start before the end of `text` that could be told; `pos` itself when its line is not usual.
-// Sixteen characters at a time (SSE2) instead of a memchr and a test for every line: the
-// pre-scan was 67 instructions a block of the issue 22 contour (docs/performance.md section
-// 34). Without SSE2 no line is skipped here (extend tests each one).
+// The scan itself (program_index_scan.inc), once for each width: the AVX2 one must carry the
+// target attribute on each of its functions, which a template cannot take from its argument.
+#define NCOFFSET_SCAN_WIDTH Sse2
+#define NCOFFSET_SCAN_TARGET
+#define NCOFFSET_SCAN_NAME skipUsualLinesSse2
+#define NCOFFSET_SCAN_UNUSUAL unusualLineStartsSse2
+#include "lang/program_index_scan.inc"
+#if defined(NCOFFSET_AVX2)
+#define NCOFFSET_SCAN_WIDTH Avx2
+#define NCOFFSET_SCAN_TARGET NCOFFSET_AVX2
+#define NCOFFSET_SCAN_NAME skipUsualLinesAvx2
+#define NCOFFSET_SCAN_UNUSUAL unusualLineStartsAvx2
+#include "lang/program_index_scan.inc"
+#endif
+#endif
+
+// The usual lines passed over 32 characters at a time where the processor has AVX2 (asked
+// once), otherwise 16;
+// without SSE2 no line is skipped here (extend tests each one).
 TextPos skipUsualLines(std::string_view text, TextPos pos) {
+#if defined(NCOFFSET_AVX2)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2 && ProgramIndex::wide_scan) return skipUsualLinesAvx2(text, pos);
+#endif
 #if defined(__SSE2__)
-  const char* const s = text.data();
-  const size_t n = text.size(), begin = pos.offset;
-  if (begin + 18 > n || s[begin] < 'A' || s[begin] > 'Z' || s[begin] == 'N' ||
-      !isDigitChar(s[begin + 1]))
-    return pos;
-  size_t i = begin;
-  long long lines = 0;
-  // Newlines passed, per byte lane (-1 each, so at most 255 groups between two sums).
-  __m128i lanes = _mm_setzero_si128();
-  const auto sum = [&] {
-    const __m128i s8 = _mm_sad_epu8(_mm_sub_epi8(_mm_setzero_si128(), lanes), _mm_setzero_si128());
-    lines += _mm_cvtsi128_si32(s8) + _mm_cvtsi128_si32(_mm_srli_si128(s8, 8));
-    lanes = _mm_setzero_si128();
-  };
-  __m128i newlines;
-  for (int groups = 0; i + 18 <= n; i += 16) {
-    if (const int unusual = unusualLineStarts(s + i, newlines); unusual != 0) {
-      sum();
-      const int at = std::countr_zero(static_cast<unsigned>(unusual));
-      const unsigned before = static_cast<unsigned>(_mm_movemask_epi8(newlines)) & ((1u << at) - 1);
-      return {i + static_cast<size_t>(at) + 1,
-              pos.line + static_cast<int>(lines + std::popcount(before) + 1)};
-    }
-    lanes = _mm_add_epi8(lanes, newlines);
-    if (++groups == 255) {
-      sum();
-      groups = 0;
-    }
-  }
-  sum();
-  // Back to the start of the line that the last group ended in (every newline counted is
-  // before it).
-  size_t start = i;
-  while (start > begin && s[start - 1] != '\n') --start;
-  return {start, pos.line + static_cast<int>(lines)};
+  return skipUsualLinesSse2(text, pos);
 #else
   static_cast<void>(text);
   return pos;
@@ -150,7 +162,7 @@ void ProgramIndex::extend(const SourceFile& file) {
     // The usual lines up to the next MiB (the released pages follow it), at once.
     const size_t mib = (scanned_.offset | 0xFFFFF) + 1;
     const TextPos skipped =
-        skipUsualLines(text.substr(0, std::min(text.size(), mib + 18)), scanned_);
+        skipUsualLines(text.substr(0, std::min(text.size(), mib + 34)), scanned_);
     if (skipped.offset >= mib) file.releaseBefore(mib);
     scanned_ = skipped;
     TextPos here = scanned_;

@@ -258,20 +258,31 @@ TEST(ProgramIndex, OverlongLinesAreLeftForExecution) {
 }
 
 // The usual lines (an upper-case letter other than N, then a digit) are passed over sixteen
-// characters at a time (skipUsualLines, docs/performance.md section 34); the labels and
-// structures between them must get the offsets and line numbers that reading line by line
-// gives, whatever the lengths, the line ends (LF, CR LF) and where the groups of sixteen fall.
+// or, with AVX2, 32 characters at a time (skipUsualLines, docs/performance.md sections 34 and
+// 45); the labels and structures between them must get the offsets and line numbers that
+// reading line by line gives, whatever the lengths, the line ends (LF, CR LF) and where the
+// groups fall. Both widths, where the processor has AVX2.
+void labelsAmongUsualLines();
 TEST(ProgramIndex, LabelsAmongUsualLinesOfEveryLength) {
+  labelsAmongUsualLines();
+}
+TEST(ProgramIndex, LabelsAmongUsualLinesSixteenAtATime) {
+  ProgramIndex::wide_scan = false;
+  labelsAmongUsualLines();
+  ProgramIndex::wide_scan = true;
+}
+
+void labelsAmongUsualLines() {
   unsigned seed = 2026;
   auto next = [&](unsigned n) {
     seed = seed * 1103515245u + 12345u;
     return (seed >> 16) % n;
   };
-  for (int program = 0; program < 200; ++program) {
+  for (int program = 0; program < 400; ++program) {
     std::string text;
     std::vector<std::pair<std::string, int>> labels;
     int line = 1, open = 0;
-    const unsigned lines = 1 + next(120);
+    const unsigned lines = 1 + next(program < 200 ? 120 : 600);
     for (unsigned k = 0; k < lines; ++k, ++line) {
       const unsigned kind = next(10);
       if (kind == 0) {
