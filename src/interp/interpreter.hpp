@@ -161,6 +161,12 @@ class Interpreter final : public lang::Environment {
   // True: the line's words are collected. `ended`: the character after `text` may be read.
   bool plainLine(std::string_view text, bool ended);
   bool scanPlainLine(std::string_view text, bool ended);
+  template <class AtEnd>
+  const char* plainWords(const char* base, AtEnd at_end, Motion& motion, core::TrcMode& trc);
+  void takePlainLine(Motion motion, core::TrcMode trc);
+  // The next line read and collected in one pass if it is plain (plain_line.cpp).
+  bool lineInPlace(ProgramLevel& lvl, size_t max_len);
+  void countLine(ProgramLevel& lvl);  // run()'s bookkeeping of a line read
   bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);
   void finishPlainLine() {  // inline: once a block, from run()
     words_plain_ = false;   // until the block is through without an alarm (executeBlock)
