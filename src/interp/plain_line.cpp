@@ -283,6 +283,7 @@ void Interpreter::startRun(LoadedProgram& program, bool init_file) {
   if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
   words_plain_ = false;
+  in_place_ = false;
 }
 
 // The bookkeeping of every line read: the pages read before released now and then, the block
@@ -298,10 +299,19 @@ NCOFFSET_INLINE_STEP void Interpreter::countLine(ProgramLevel& lvl) {
                       options_.limits.max_blocks_without_motion));
 }
 
+// Where lineInPlace may read lines: the level's text ends with a newline (every scan stops at
+// one), its lines are its own (no built-in cycle's), no macro may expand them, and no contour
+// definition, carrier change or modal call wants the general block end. Only a line that is not
+// plain, a level's change or a section's end changes any of it, so the block loop asks again
+// only after those (in_place_).
+NCOFFSET_INLINE_STEP bool Interpreter::inPlaceAllowed(const ProgramLevel& lvl) const {
+  return !lvl.text.empty() && lvl.text.back() == '\n' && lvl.report_file < 0 && macros_.empty() &&
+         !contour_active_ && !carrier_.pending && !mcall_.active;
+}
+
 // The next line read and collected in one pass when it is plain (docs/performance.md §44): the
 // word scan finds the line's end itself, a newline or CR LF, instead of a search for the newline
-// first (lang::nextLine) and the scan after it. Only where the level's text ends with a newline
-// (every scan stops at one), outside a built-in cycle's lines and without macros; whatever it
+// first (lang::nextLine) and the scan after it. Only where inPlaceAllowed says so; whatever it
 // refuses (also a line beyond --max-line-length, whose alarm the general way raises) is read
 // again by nextLine and plainLine, its twin, as if it had not looked (nothing but the plain
 // fields of words_ changed, which both ways clear). True: the line is taken, with the
@@ -309,8 +319,7 @@ NCOFFSET_INLINE_STEP void Interpreter::countLine(ProgramLevel& lvl) {
 NCOFFSET_INLINE_STEP bool Interpreter::lineInPlace(ProgramLevel& lvl, size_t max_len) {
   const std::string_view all = lvl.text;
   const size_t at = lvl.pos.offset;
-  if (at >= all.size() || all.back() != '\n' || lvl.report_file >= 0 || !macros_.empty() ||
-      contour_active_ || carrier_.pending || mcall_.active) [[unlikely]]
+  if (at >= all.size()) [[unlikely]]
     return false;
   const char* const begin = all.data() + at;
   if (refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32] == begin) return false;
@@ -340,8 +349,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   while (!ended_) {
     ProgramLevel& lvl = flow_.level();
     file_ = lvl.program->file_id;
-    bool plain = lineInPlace(lvl, max_len);
+    if (!in_place_) [[unlikely]]
+      in_place_ = inPlaceAllowed(lvl);
+    bool plain = in_place_ && lineInPlace(lvl, max_len);
     if (!plain) {
+      in_place_ = false;  // the line may change what inPlaceAllowed asks, or the level end
       const bool more = flow_.nextLine(text, line_pos_);
       line_ = line_pos_.line;
       line_text_ = text;
@@ -389,8 +401,10 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
     }
     try {
       plain ? finishPlainLine() : executeBlock();
-      if (line_pos_.offset == section_end_) [[unlikely]]
+      if (line_pos_.offset == section_end_) [[unlikely]] {
         endSection();  // CALL .. BLOCK .. TO ..
+        in_place_ = false;
+      }
     } catch (const std::bad_alloc&) {
       raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
     }

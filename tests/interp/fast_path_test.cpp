@@ -324,8 +324,9 @@ TEST(FrontFastPath, PlainBlockAfterASaveReturnAsTheGeneralPath) {
 // A plain line is read and collected in one pass (Interpreter::lineInPlace, docs/performance.md
 // §44) where the program's text ends with a newline; without that last newline every line is
 // read by nextLine and collected by plainLine, its twin. Random programs of plain lines and
-// others (blanks, tabs, block numbers, empty lines, a '\0' or a CR inside a line, comments,
-// macros, alarms) with LF, CR LF and CR CR LF ends, and a line beyond --max-line-length, both ways.
+// others (blanks, tabs, block numbers, empty lines, a modal call, a rounding, a '\0' or a CR
+// inside a line, comments, macros, alarms) with LF, CR LF and CR CR LF ends, and a line beyond
+// --max-line-length, both ways.
 TEST(FrontFastPath, LinesInPlaceAsNextLine) {
   using namespace std::string_literals;
   // Lines that run (the first `safe`), then lines that end the program with an alarm or take
@@ -343,6 +344,9 @@ TEST(FrontFastPath, LinesInPlaceAsNextLine) {
                                "G40 G1 X0 Y0",
                                "G1 X.5 F+20",
                                "G2 X10 Y0 CR=50",
+                               "MCALL CYCLE82(10,0,1,-6,0,1)",
+                               "MCALL",
+                               "G1 X20 Y5 RND=1",
                                "G1 X7\0 Y2"s,
                                "CR=5 G2 X0 Y0",
                                "G1 X1 X2",
@@ -350,7 +354,7 @@ TEST(FrontFastPath, LinesInPlaceAsNextLine) {
                                "DEFINE MM AS G1 X3",
                                "MM",
                                "G1 X1" + std::string(70000, ' ') + "Y2"};
-  const unsigned safe = 13;
+  const unsigned safe = 16;
   const char* const ends[] = {"\n", "\n", "\r\n", "\r\r\n"};
   Random next{7};
   int with_segments = 0, with_alarm = 0;
