@@ -66,7 +66,6 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainG(double value, bool is_int, Motion&
     return true;
   }
   if (value >= 40 && value <= 42) {
-    motion_.settingsMayChange();  // G group 7 is one of the kept compensation settings
     trc = value == 40   ? core::TrcMode::Off
           : value == 41 ? core::TrcMode::Left
                         : core::TrcMode::Right;
@@ -84,7 +83,6 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainGCode(unsigned long long g, Motion& 
     return true;
   }
   if (g - 40 > 2) return false;
-  motion_.settingsMayChange();               // G group 7 is one of the kept compensation settings
   trc = static_cast<core::TrcMode>(g - 40);  // G40 Off, G41 Left, G42 Right
   return true;
 }
