@@ -165,7 +165,8 @@ class Interpreter final : public lang::Environment {
   const char* plainWords(const char* base, AtEnd at_end, Motion& motion, core::TrcMode& trc);
   void takePlainLine(Motion motion, core::TrcMode trc);
   // The next line read and collected in one pass if it is plain (plain_line.cpp).
-  bool lineInPlace(ProgramLevel& lvl, size_t max_len);
+  enum class InPlace { Taken, No, Refused };
+  InPlace lineInPlace(ProgramLevel& lvl, size_t max_len);
   bool inPlaceAllowed(const ProgramLevel& lvl) const;
   void countLine(ProgramLevel& lvl);  // run()'s bookkeeping of a line read
   bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);

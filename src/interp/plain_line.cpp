@@ -312,21 +312,28 @@ NCOFFSET_INLINE_STEP bool Interpreter::inPlaceAllowed(const ProgramLevel& lvl) c
 // first (lang::nextLine) and the scan after it. Only where inPlaceAllowed says so; whatever it
 // refuses (also a line beyond --max-line-length, whose alarm the general way raises) is read
 // again by nextLine and plainLine, its twin, as if it had not looked (nothing but the plain
-// fields of words_ changed, which both ways clear). True: the line is taken, with the
-// bookkeeping of run() done.
-NCOFFSET_INLINE_STEP bool Interpreter::lineInPlace(ProgramLevel& lvl, size_t max_len) {
+// fields of words_ changed, which both ways clear). Taken: with the bookkeeping of run() done;
+// Refused: a line plainLine refused before (by its address), which plainLine need not ask again.
+NCOFFSET_INLINE_STEP Interpreter::InPlace Interpreter::lineInPlace(ProgramLevel& lvl,
+                                                                   size_t max_len) {
   const std::string_view all = lvl.text;
   const size_t at = lvl.pos.offset;
   if (at >= all.size()) [[unlikely]]
-    return false;
+    return InPlace::No;
   const char* const begin = all.data() + at;
-  if (refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32] == begin) return false;
+  if (refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32] == begin)
+    return InPlace::Refused;
+  // (After the refused lines: a loop of other lines does not ask on every line.)
+  if (!in_place_) [[unlikely]] {
+    in_place_ = inPlaceAllowed(lvl);
+    if (!in_place_) return InPlace::No;
+  }
   Motion motion;
   core::TrcMode trc;
   const char* const stop = plainWords(
       begin, [](const char* p) { return *p == '\n' || (*p == '\r' && p[1] == '\n'); }, motion, trc);
   const auto len = static_cast<size_t>(stop - begin);
-  if (stop == nullptr || len > max_len) return false;
+  if (stop == nullptr || len > max_len) return InPlace::No;
   line_pos_ = lvl.pos;
   lvl.pos.offset = at + len + (*stop == '\n' ? 1 : 2);
   ++lvl.pos.line;
@@ -335,7 +342,7 @@ NCOFFSET_INLINE_STEP bool Interpreter::lineInPlace(ProgramLevel& lvl, size_t max
   column_ = 0;
   countLine(lvl);
   takePlainLine(motion, trc);
-  return true;
+  return InPlace::Taken;
 }
 
 // The block loop (here, beside the plain line, which it inlines: a call a line costs the saving
@@ -347,9 +354,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   while (!ended_) {
     ProgramLevel& lvl = flow_.level();
     file_ = lvl.program->file_id;
-    if (!in_place_) [[unlikely]]
-      in_place_ = inPlaceAllowed(lvl);
-    bool plain = in_place_ && lineInPlace(lvl, max_len);
+    const InPlace in_place = lineInPlace(lvl, max_len);
+    bool plain = in_place == InPlace::Taken;
     if (!plain) {
       in_place_ = false;  // the line may change what inPlaceAllowed asks, or the level end
       const bool more = flow_.nextLine(text, line_pos_);
@@ -394,7 +400,7 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
         text = expanded_;
         ended = true;
       }
-      plain = plainLine(text, ended);
+      plain = in_place == InPlace::No && plainLine(text, ended);  // refused: plainLine's too
       if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     }
     try {
