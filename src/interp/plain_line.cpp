@@ -1,8 +1,9 @@
 // The per-block fast paths of the interpreter for the blocks CAM systems write (docs/performance.md
 // sections 25, 27 and 30): plain blocks (Parser::simpleWords) collected without looking at
 // statement kinds, and plain lines of X, Y, Z, G0..G3, F and CR= words collected as they are
-// scanned, with no statement at all. Each hands whatever it does not know to the general path;
-// tests/interp/fast_path_test.cpp compares them with it.
+// scanned, with no statement at all; the usual plain line is even read by its word scan, which
+// finds the line's end itself (lineInPlace, section 44). Each hands whatever it does not know to
+// the general path; tests/interp/fast_path_test.cpp compares them with it.
 
 #include <fmt/format.h>
 
