@@ -161,6 +161,14 @@ class Interpreter final : public lang::Environment {
   // True: the line's words are collected. `ended`: the character after `text` may be read.
   bool plainLine(std::string_view text, bool ended);
   bool scanPlainLine(std::string_view text, bool ended);
+  template <class AtEnd>
+  const char* plainWords(const char* base, AtEnd at_end, Motion& motion, core::TrcMode& trc);
+  void takePlainLine(Motion motion, core::TrcMode trc);
+  // The next line read and collected in one pass if it is plain (plain_line.cpp).
+  enum class InPlace { Taken, No, Refused };
+  InPlace lineInPlace(ProgramLevel& lvl, size_t max_len);
+  bool inPlaceAllowed(const ProgramLevel& lvl) const;
+  void countLine(ProgramLevel& lvl);  // run()'s bookkeeping of a line read
   bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);
   void finishPlainLine() {  // inline: once a block, from run()
     words_plain_ = false;   // until the block is through without an alarm (executeBlock)
@@ -345,7 +353,8 @@ class Interpreter final : public lang::Environment {
   std::string line_copy_;                  // plainLine's copy of the line, ended by a '\0'
   int plain_column_ = 0;                   // of the first word of the plain line
   std::array<const char*, 32> refused_{};  // lines plainLine refused, by their text's address
-  lang::TextPos line_pos_;                 // start of the executing line
+  bool in_place_ = false;   // inPlaceAllowed held when asked, and only plain lines ran since
+  lang::TextPos line_pos_;  // start of the executing line
   int line_ = 0;
   int column_ = 0;              // of the executing statement (0: the line as a whole)
   std::string_view line_text_;  // the executing line (a view into its loaded file)

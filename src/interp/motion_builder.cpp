@@ -284,6 +284,10 @@ void MotionBuilder::plainSettings(const ModalState& modal) {
   m_.feed_unit = modal.feed_unit;
   m_.lead_change = 0;
   m_.sar.kind = core::SarKind::None;
+  plain_inc_ = modal.incremental;
+  plain_unit_ = modal.units == Units::G70 || modal.units == Units::G700 ? 25.4 : 1.0;
+  const double* factor = plain_inc_ ? modal.diam_inc : modal.diam_abs;
+  for (int i = 0; i < 3; ++i) plain_factor_[i] = factor[i];
   plain_settings_ = true;
 }
 

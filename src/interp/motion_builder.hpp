@@ -93,7 +93,7 @@ class MotionBuilder {
   void arcEnd(const BlockWords& w, const geom::ArcSolution& sol, PlaneAxes pa, const double (&f)[3],
               Vec3& target);
   // arc() for a circle by CR= alone (no centre, AR=) whose end point is programmed (buildPlain).
-  void radiusArc(const BlockWords& w, const ModalState& modal, Vec3& target);
+  void radiusArc(const BlockWords& w, const ModalState& modal, const Vec3& target);
   // G0/G1: the tool length taken up by each axis the block moves (W1 2.1, spec §2.6). False
   // when the block moves nowhere.
   // A thread or tapping line (threads.cpp): its feed is the lead; G63 names the block's G1.
@@ -102,7 +102,7 @@ class MotionBuilder {
   void compensationSettings(const ModalState& modal);
   // buildPlain's steps (motion_plain.cpp): the target of the axis words without frame, and the
   // linear block's tool length take-up; false when the block moves nowhere.
-  Vec3 plainTarget(const BlockWords& w, const ModalState& modal) const;
+  Vec3 plainTarget(const BlockWords& w) const;
   bool plainTakeUp(const BlockWords& w, const ModalState& modal, const Vec3& to);
   // compensationSettings() for buildPlain, with the tool length vector it keeps.
   void plainSettings(const ModalState& modal);
@@ -161,13 +161,18 @@ class MotionBuilder {
   Vec3 wcs_;
   Vec3 bcs_;
   core::ApproachPoints approach_points_;
-  // m_.trc, m_.has_tip, m_.tip and full_length_ were built by buildPlain from the interpreter's
-  // modal state and tool, and only plain lines ran since (settingsMayChange): they still hold.
+  // m_.trc (but its mode, G40..G42, written for every block), m_.has_tip, m_.tip and full_length_
+  // were built by buildPlain from the interpreter's modal state and tool, and only plain lines ran
+  // since (settingsMayChange): they still hold.
   // (So are m_.plane, m_.feed_unit, m_.lead_change, m_.sar.kind; the frame is the last motion's,
   // the identity, and the modal motion no thread: only other lines change them.)
   bool plain_settings_ = false;
   Vec3 full_length_;       // tools_.lengthVector(plane) when plain_settings_
   bool taken_up_ = false;  // applied_offset_ == full_length_: nothing to take up
+  // plainTarget's G90/G91, inch factor (1 or 25.4) and diameter factors, when plain_settings_.
+  bool plain_inc_ = false;
+  double plain_unit_ = 1;
+  double plain_factor_[3] = {1, 1, 1};
 };
 
 // The SAR stage's motion() for the usual block is note() and the stage behind's motion()

@@ -3,7 +3,8 @@
 // state, without a frame or with the frame of the last motion unchanged and no thread motion, is
 // built here without the steps its words cannot need (frame suppression, AC/IC/DC words, SAR,
 // G63, frame products). The compensation settings, the tool tip and the tool length vector stay
-// in the reused block while only plain lines without G40/G41/G42 run (settingsMayChange).
+// in the reused block while only plain lines run (settingsMayChange); of the compensation
+// settings only the mode (G40/G41/G42, plain words) is written for every block.
 // MotionBuilder::build is its twin: the same fields, the same values bit for bit, the same alarms
 // in the same order (tests/interp/motion_fast_path_test.cpp).
 #include <fmt/format.h>
@@ -21,16 +22,16 @@ void MotionBuilder::targetAlarm(double value, int axis) {
 }
 
 // target() for axis words without AC/IC/DAC/..., from the last programmed point.
-[[gnu::always_inline]] inline Vec3 MotionBuilder::plainTarget(const BlockWords& w,
-                                                              const ModalState& modal) const {
+[[gnu::always_inline]] inline Vec3 MotionBuilder::plainTarget(const BlockWords& w) const {
   Vec3 to = wcs_;
-  const bool inc = modal.incremental;
-  const double* factor = inc ? modal.diam_inc : modal.diam_abs;
-  // toMm: v * 1.0 is v bit for bit, so the inch factor needs no branch per axis.
-  const double unit = modal.units == Units::G70 || modal.units == Units::G700 ? 25.4 : 1.0;
+  // G90/G91, the inch factor and the diameter factors as plainSettings took them from the modal
+  // state (only a line that is not plain changes them). toMm: v * 1.0 is v bit for bit, so the inch
+  // factor needs no branch per axis.
+  const bool inc = plain_inc_;
+  const double unit = plain_unit_;
   auto axis = [&](int i, double& t) {
     if (!w.axis[i]) return;
-    const double v = w.axis_value[i] * unit * factor[i];
+    const double v = w.axis_value[i] * unit * plain_factor_[i];
     t = inc ? t + v : v;
     if (!(std::fabs(t) <= 1e9)) [[unlikely]]  // beyond, infinite or NaN: one comparison
       targetAlarm(t, i);
@@ -57,15 +58,23 @@ void MotionBuilder::targetAlarm(double value, int axis) {
   return moves((to + applied_offset_) - (bcs_ + before));
 }
 
-void MotionBuilder::radiusArc(const BlockWords& w, const ModalState& modal, Vec3& target) {
+// arc() for a circle by CR= alone. arcByRadius's end point is the programmed one (`end` itself),
+// so the target and the block's end stay as buildPlain wrote them, and of arcEnd's stores only
+// the centre's, the applicate's and the turns' change the block.
+void MotionBuilder::radiusArc(const BlockWords& w, const ModalState& modal, const Vec3& target) {
   const PlaneAxes pa = planeAxes(modal.plane);
-  const double f[3] = {wcs_.x, wcs_.y, wcs_.z};
+  double c[3] = {wcs_.x, wcs_.y, wcs_.z};
   const double t[3] = {target.x, target.y, target.z};
-  const geom::Vec2 start{f[pa.abscissa], f[pa.ordinate]}, end{t[pa.abscissa], t[pa.ordinate]};
-  arcEnd(w,
-         geom::arcByRadius(start, end, toMm(modal, *w.cr), m_.motion == Motion::G3,
-                           data_.get(md_circle_const_), data_.get(md_circle_factor_)),
-         pa, f, target);
+  const geom::Vec2 start{c[pa.abscissa], c[pa.ordinate]}, end{t[pa.abscissa], t[pa.ordinate]};
+  const geom::Vec2 centre =
+      geom::arcByRadius(start, end, toMm(modal, *w.cr), m_.motion == Motion::G3,
+                        data_.get(md_circle_const_), data_.get(md_circle_factor_))
+          .centre;
+  c[pa.abscissa] = centre.a;
+  c[pa.ordinate] = centre.o;
+  m_.centre = {c[0], c[1], c[2]};
+  m_.applicate = pa.applicate;
+  m_.turns = w.turn.value_or(0);
 }
 
 bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
@@ -80,7 +89,8 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
       return build(w, modal, at);
     plainSettings(modal);
   }
-  Vec3 to = plainTarget(w, modal);
+  m.trc.mode = modal.trc;  // G40/G41/G42 may be a plain line's word: not kept
+  Vec3 to = plainTarget(w);
   m.motion = modal.motion;
   m.line = at.line;
   m.file = at.file;

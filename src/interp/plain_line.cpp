@@ -1,8 +1,9 @@
 // The per-block fast paths of the interpreter for the blocks CAM systems write (docs/performance.md
 // sections 25, 27 and 30): plain blocks (Parser::simpleWords) collected without looking at
 // statement kinds, and plain lines of X, Y, Z, G0..G3, F and CR= words collected as they are
-// scanned, with no statement at all. Each hands whatever it does not know to the general path;
-// tests/interp/fast_path_test.cpp compares them with it.
+// scanned, with no statement at all; the usual plain line is even read by its word scan, which
+// finds the line's end itself (lineInPlace, section 44). Each hands whatever it does not know to
+// the general path; tests/interp/fast_path_test.cpp compares them with it.
 
 #include <fmt/format.h>
 
@@ -66,7 +67,6 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainG(double value, bool is_int, Motion&
     return true;
   }
   if (value >= 40 && value <= 42) {
-    motion_.settingsMayChange();  // G group 7 is one of the kept compensation settings
     trc = value == 40   ? core::TrcMode::Off
           : value == 41 ? core::TrcMode::Left
                         : core::TrcMode::Right;
@@ -84,7 +84,6 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainGCode(unsigned long long g, Motion& 
     return true;
   }
   if (g - 40 > 2) return false;
-  motion_.settingsMayChange();               // G group 7 is one of the kept compensation settings
   trc = static_cast<core::TrcMode>(g - 40);  // G40 Off, G41 Left, G42 Right
   return true;
 }
@@ -190,43 +189,61 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
   return true;
 }
 
-// plainLine without the test for lines refused before. The line is scanned where it stands
-// when the character after it may be read (a newline, or the '\0' of a macro expansion: no
-// digit, sign, blank or letter, so every scan stops there), else in a copy ended by a '\0'.
-NCOFFSET_INLINE_STEP bool Interpreter::scanPlainLine(std::string_view text, bool ended) {
-  const char* const base = ended ? text.data() : lang::copyWritten(text, line_copy_);
-  const char* const end = base + text.size();
+// The words of a plain line from `base` up to where `at_end` says it ends (an optional block
+// number first), collected into words_ as plainWord collects them; G groups 1 and 7 go to
+// `motion` and `trc`, which takePlainLine stores. The end of the last word, or nullptr when the
+// line is not plain, empty or a block number alone. A word stops at the line's end or before the
+// next word (a '\0' or CR inside the line is neither: the next word's scan refuses it).
+template <class AtEnd>
+NCOFFSET_INLINE_STEP const char* Interpreter::plainWords(const char* base, AtEnd at_end,
+                                                         Motion& motion, core::TrcMode& trc) {
   const char* p = base;
   if (*p < 'A' || *p == 'N') [[unlikely]] {  // else a word's letter (the usual line), not the end
     while (*p == ' ' || *p == '\t') ++p;
     if (*p == 'N' && lang::isDigit(p[1])) {  // the block number (more than 18 digits: alarm)
       const char* q = p + 1;
       while (lang::isDigit(*q)) ++q;
-      if (q - p - 1 > 18) return false;
+      if (q - p - 1 > 18) return nullptr;
       p = q;
       while (*p == ' ' || *p == '\t') ++p;
     }
-    if (p == end) return false;  // an empty line or a block number alone
+    if (at_end(p)) return nullptr;  // an empty line or a block number alone
   }
   plain_column_ = static_cast<int>(p - base) + 1;
   // Only plainWord's fields now (9 stores): executeBlock clears the rest if the line is not
-  // plain after all, the end below if it is.
-  const bool was_plain = words_plain_;
+  // plain after all, takePlainLine if it is.
   words_.clearPlain();
-  Motion motion = modal_.motion;
-  core::TrcMode trc = modal_.trc;
-  // A word stops at the line's end or before the next word (a '\0' or CR inside the line is
-  // neither: the next word's scan refuses it).
-  while (plainLineWord(p, motion, trc)) {
-    if (p == end) {
-      if (!was_plain) words_.clearExceptPlain();  // after a block of other words
-      modal_.motion = motion;
-      modal_.trc = trc;
-      flow_.level().defs_allowed = false;
-      return true;
-    }
-  }
-  return false;
+  motion = modal_.motion;
+  trc = modal_.trc;
+  while (plainLineWord(p, motion, trc))
+    if (at_end(p)) return p;
+  return nullptr;
+}
+
+// The plain line's words are taken: the rest of words_ cleared after a block of other words,
+// the modal motion and compensation stored.
+NCOFFSET_INLINE_STEP void Interpreter::takePlainLine(Motion motion, core::TrcMode trc) {
+  if (!words_plain_) words_.clearExceptPlain();
+  modal_.motion = motion;
+  modal_.trc = trc;
+  flow_.level().defs_allowed = false;
+}
+
+// plainLine without the test for lines refused before. The line is scanned where it stands
+// when the character after it may be read (a newline, or the '\0' of a macro expansion: no
+// digit, sign, blank or letter, so every scan stops there), else in a copy ended by a '\0'.
+// Out of line: the usual line is lineInPlace's, and one copy of the scan inlined into the block
+// loop leaves room for inlining the number scan there.
+[[gnu::noinline]] bool Interpreter::scanPlainLine(std::string_view text, bool ended) {
+  const char* const base = ended ? text.data() : lang::copyWritten(text, line_copy_);
+  const char* const end = base + text.size();
+  Motion motion;
+  core::TrcMode trc;
+  if (!plainWords(
+          base, [end](const char* p) { return p == end; }, motion, trc))
+    return false;
+  takePlainLine(motion, trc);
+  return true;
 }
 
 // Parser::parseWritten, Parser::simpleWords and executePlainBlock in one pass, for a line whose
@@ -265,6 +282,68 @@ void Interpreter::startRun(LoadedProgram& program, bool init_file) {
   if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
   words_plain_ = false;
+  in_place_ = false;
+}
+
+// The bookkeeping of every line read: the pages read before released now and then, the block
+// budget, the blocks without motion.
+NCOFFSET_INLINE_STEP void Interpreter::countLine(ProgramLevel& lvl) {
+  if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
+  if (++executed_ > block_budget_) [[unlikely]]
+    blockBudgetReached();
+  if (++without_motion_ > options_.limits.max_blocks_without_motion)
+    raise(AlarmNumber::NoMotionLimit,
+          fmt::format("{} blocks executed without any motion (endless loop?); raise "
+                      "--max-blocks-without-motion",
+                      options_.limits.max_blocks_without_motion));
+}
+
+// Where lineInPlace may read lines: the level's text ends with a newline (every scan stops at
+// one), its lines are its own (no built-in cycle's), no macro may expand them, and no contour
+// definition, carrier change or modal call wants the general block end. Only a line that is not
+// plain, a level's change or a section's end changes any of it, so the block loop asks again
+// only after those (in_place_).
+NCOFFSET_INLINE_STEP bool Interpreter::inPlaceAllowed(const ProgramLevel& lvl) const {
+  return !lvl.text.empty() && lvl.text.back() == '\n' && lvl.report_file < 0 && macros_.empty() &&
+         !contour_active_ && !carrier_.pending && !mcall_.active;
+}
+
+// The next line read and collected in one pass when it is plain (docs/performance.md §44): the
+// word scan finds the line's end itself, a newline or CR LF, instead of a search for the newline
+// first (lang::nextLine) and the scan after it. Only where inPlaceAllowed says so; whatever it
+// refuses (also a line beyond --max-line-length, whose alarm the general way raises) is read
+// again by nextLine and plainLine, its twin, as if it had not looked (nothing but the plain
+// fields of words_ changed, which both ways clear). Taken: with the bookkeeping of run() done;
+// Refused: a line plainLine refused before (by its address), which plainLine need not ask again.
+NCOFFSET_INLINE_STEP Interpreter::InPlace Interpreter::lineInPlace(ProgramLevel& lvl,
+                                                                   size_t max_len) {
+  const std::string_view all = lvl.text;
+  const size_t at = lvl.pos.offset;
+  if (at >= all.size()) [[unlikely]]
+    return InPlace::No;
+  const char* const begin = all.data() + at;
+  if (refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32] == begin)
+    return InPlace::Refused;
+  // (After the refused lines: a loop of other lines does not ask on every line.)
+  if (!in_place_) [[unlikely]] {
+    in_place_ = inPlaceAllowed(lvl);
+    if (!in_place_) return InPlace::No;
+  }
+  Motion motion;
+  core::TrcMode trc;
+  const char* const stop = plainWords(
+      begin, [](const char* p) { return *p == '\n' || (*p == '\r' && p[1] == '\n'); }, motion, trc);
+  const auto len = static_cast<size_t>(stop - begin);
+  if (stop == nullptr || len > max_len) return InPlace::No;
+  line_pos_ = lvl.pos;
+  lvl.pos.offset = at + len + (*stop == '\n' ? 1 : 2);
+  ++lvl.pos.line;
+  line_ = line_pos_.line;
+  line_text_ = std::string_view(begin, len);
+  column_ = 0;
+  countLine(lvl);
+  takePlainLine(motion, trc);
+  return InPlace::Taken;
 }
 
 // The block loop (here, beside the plain line, which it inlines: a call a line costs the saving
@@ -276,60 +355,61 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   while (!ended_) {
     ProgramLevel& lvl = flow_.level();
     file_ = lvl.program->file_id;
-    const bool more = flow_.nextLine(text, line_pos_);
-    line_ = line_pos_.line;
-    line_text_ = text;
-    column_ = 0;
-    if (lvl.report_file >= 0) [[unlikely]] {  // a built-in cycle: the calling block's line
-      file_ = lvl.report_file;
-      line_ = lvl.report_line;
-      line_text_ = lvl.report_text;
-    }
-    if (!more) {
-      // End of file: a subprogram returns, the main program (or init file) ends.
-      if (flow_.depth() > 1) {
-        returnFromSubprogram();
-        continue;
+    const InPlace in_place = lineInPlace(lvl, max_len);
+    bool plain = in_place == InPlace::Taken;
+    if (!plain) {
+      in_place_ = false;  // the line may change what inPlaceAllowed asks, or the level end
+      const bool more = flow_.nextLine(text, line_pos_);
+      line_ = line_pos_.line;
+      line_text_ = text;
+      column_ = 0;
+      if (lvl.report_file >= 0) [[unlikely]] {  // a built-in cycle: the calling block's line
+        file_ = lvl.report_file;
+        line_ = lvl.report_line;
+        line_text_ = lvl.report_text;
       }
-      break;
-    }
-    if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
-    if (++executed_ > block_budget_) [[unlikely]]
-      blockBudgetReached();
-    if (++without_motion_ > options_.limits.max_blocks_without_motion)
-      raise(AlarmNumber::NoMotionLimit,
-            fmt::format("{} blocks executed without any motion (endless loop?); raise "
-                        "--max-blocks-without-motion",
-                        options_.limits.max_blocks_without_motion));
-    if (text.size() > max_len)
-      raise(AlarmNumber::LineTooLong,
-            fmt::format("block of {} characters is longer than the limit of {} (--max-line-length)",
-                        text.size(), max_len));
-    if (!text.empty() && text.front() == '%') {  // archive header %_N_NAME_MPF
-      // A fed text archive (docs/architecture.md "Streaming"): the program ends before the
-      // next program's header, as its range ends when the whole archive is loaded.
-      if (lvl.program->source->fed() && line_pos_.offset > 0) [[unlikely]] {
+      if (!more) {
+        // End of file: a subprogram returns, the main program (or init file) ends.
         if (flow_.depth() > 1) {
           returnFromSubprogram();
           continue;
         }
         break;
       }
-      continue;
+      countLine(lvl);
+      if (text.size() > max_len)
+        raise(AlarmNumber::LineTooLong,
+              fmt::format("block of {} characters is longer than the limit of {} "
+                          "(--max-line-length)",
+                          text.size(), max_len));
+      if (!text.empty() && text.front() == '%') {  // archive header %_N_NAME_MPF
+        // A fed text archive (docs/architecture.md "Streaming"): the program ends before the
+        // next program's header, as its range ends when the whole archive is loaded.
+        if (lvl.program->source->fed() && line_pos_.offset > 0) [[unlikely]] {
+          if (flow_.depth() > 1) {
+            returnFromSubprogram();
+            continue;
+          }
+          break;
+        }
+        continue;
+      }
+      // X Y Z G0..G3 G40..G42 F CR= alone: no parse. Behind the line a newline, or the '\0' of
+      // an expansion, may be read (`ended`).
+      bool ended = lvl.pos.offset - line_pos_.offset > text.size();
+      if (!macros_.empty() && macros_.expand(text, expanded_, max_len)) [[unlikely]] {
+        text = expanded_;
+        ended = true;
+      }
+      plain = in_place == InPlace::No && plainLine(text, ended);  // refused: plainLine's too
+      if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     }
-    // X Y Z G0..G3 G40..G42 F CR= alone: no parse. Behind the line a newline, or the '\0' of
-    // an expansion, may be read (`ended`).
-    bool ended = lvl.pos.offset - line_pos_.offset > text.size();
-    if (!macros_.empty() && macros_.expand(text, expanded_, max_len)) [[unlikely]] {
-      text = expanded_;
-      ended = true;
-    }
-    const bool plain = plainLine(text, ended);
-    if (!plain) lang::parseBlock(text, line_, block_, {options_.limits.max_expression_depth});
     try {
       plain ? finishPlainLine() : executeBlock();
-      if (line_pos_.offset == section_end_) [[unlikely]]
+      if (line_pos_.offset == section_end_) [[unlikely]] {
         endSection();  // CALL .. BLOCK .. TO ..
+        in_place_ = false;
+      }
     } catch (const std::bad_alloc&) {
       raise(AlarmNumber::ArrayTooLarge, "out of memory while executing this block");
     }

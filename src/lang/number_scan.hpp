@@ -35,7 +35,7 @@ inline unsigned long long appendDigits(const char*& p, unsigned long long mant) 
 }
 
 // Digits with at most one '.' from `p` (none at all: digits == 0).
-inline DecimalDigits scanDigits(const char* p) {
+[[gnu::always_inline]] inline DecimalDigits scanDigits(const char* p) {
   DecimalDigits d;
   const char* const begin = p;
   unsigned long long mant = appendDigits(p, 0);

@@ -51,6 +51,16 @@ void expectSameVec(const Vec3& a, const Vec3& b) {
   EXPECT_EQ(a.z, b.z);
 }
 
+// The tests' pseudo-random numbers below n (a linear congruential generator: the same programs
+// everywhere).
+struct Random {
+  unsigned seed;
+  unsigned operator()(unsigned n) {
+    seed = seed * 1103515245u + 12345u;
+    return (seed >> 16) % n;
+  }
+};
+
 // The fast way's outcome, after comparing it with the general way's.
 // `general_builder`: the general way also builds every motion by MotionBuilder::build.
 Outcome expectSame(const std::string& fast_text, const std::string& general_text,
@@ -108,10 +118,7 @@ void compareRandomPrograms(const std::vector<const char*>& words, unsigned safe,
                            int min_segments, int min_alarm) {
   int with_segments = 0, with_alarm = 0;
   const char* const numbers[] = {"10", "-2.5", "0.125", "100", "+3", ".5", "7", "-40.75", "0"};
-  auto next = [&](unsigned n) {
-    seed = seed * 1103515245u + 12345u;
-    return (seed >> 16) % n;
-  };
+  Random next{seed};
   for (int program = 0; program < 300; ++program) {
     ThreeWays three("$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n");
     const unsigned choice = program % 2 ? safe : static_cast<unsigned>(words.size());
@@ -259,11 +266,7 @@ TEST(FrontFastPath, PlainBlocksKeepTheSettingsAsTheGeneralPath) {
                                   "G500",      "$TC_DP6[1,1]=3",
                                   "G0",        "G1"};
   const char* const numbers[] = {"10", "-2.5", "0.125", "40", "-7", "0"};
-  unsigned seed = 2026;
-  auto next = [&](unsigned n) {
-    seed = seed * 1103515245u + 12345u;
-    return (seed >> 16) % n;
-  };
+  Random next{2026};
   int with_segments = 0, with_alarm = 0;
   for (int program = 0; program < 300; ++program) {
     std::string fast = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n";
@@ -316,6 +319,60 @@ TEST(FrontFastPath, PlainBlockAfterASaveReturnAsTheGeneralPath) {
   EXPECT_FALSE(o.alarm.has_value());
   EXPECT_GT(o.segments.size(), 8u);
   std::filesystem::remove_all(dir);
+}
+
+// A plain line is read and collected in one pass (Interpreter::lineInPlace, docs/performance.md
+// §44) where the program's text ends with a newline; without that last newline every line is
+// read by nextLine and collected by plainLine, its twin. Random programs of plain lines and
+// others (blanks, tabs, block numbers, empty lines, a modal call, a rounding, a '\0' or a CR
+// inside a line, comments, macros, alarms) with LF, CR LF and CR CR LF ends, and a line beyond
+// --max-line-length, both ways.
+TEST(FrontFastPath, LinesInPlaceAsNextLine) {
+  using namespace std::string_literals;
+  // Lines that run (the first `safe`), then lines that end the program with an alarm or take
+  // the general way for good (a macro).
+  const std::string lines[] = {"G1 X10 Y0 F100",
+                               "  G1 Y50 ",
+                               "N20 G1 X10 Y60",
+                               "N30",
+                               "",
+                               "\tG1\tX40 ",
+                               "G1 X5 ; note",
+                               "R1=2 G1 X=R1",
+                               "G0 X1 Y2 Z3",
+                               "G41 G1 X-5 Y1",
+                               "G40 G1 X0 Y0",
+                               "G1 X.5 F+20",
+                               "G2 X10 Y0 CR=50",
+                               "MCALL CYCLE82(10,0,1,-6,0,1)",
+                               "MCALL",
+                               "G1 X20 Y5 RND=1",
+                               "G1 X7\0 Y2"s,
+                               "CR=5 G2 X0 Y0",
+                               "G1 X1 X2",
+                               "G1 X3\rY4",
+                               "DEFINE MM AS G1 X3",
+                               "MM",
+                               "G1 X1" + std::string(70000, ' ') + "Y2"};
+  const unsigned safe = 16;
+  const char* const ends[] = {"\n", "\n", "\r\n", "\r\r\n"};
+  Random next{7};
+  int with_segments = 0, with_alarm = 0;
+  for (int program = 0; program < 200; ++program) {
+    std::string text = "$TC_DP1[1,1]=120\n$TC_DP6[1,1]=2\nT1 D1\nG0 X0 Y0 Z0 F100\n";
+    const unsigned count = 3 + next(18);
+    for (unsigned k = 0; k < count; ++k) {
+      // Even programs: only lines that run, LF and CR LF; odd ones: anything.
+      const bool any = program % 2 != 0 || next(12) == 0;
+      text += lines[next(any ? static_cast<unsigned>(std::size(lines)) : safe)];
+      text += k + 1 == count ? "\n" : ends[next(any ? 4 : 3)];
+    }
+    const Outcome o = expectSame(text, text.substr(0, text.size() - 1));
+    with_segments += o.segments.size() > 2;
+    with_alarm += o.alarm.has_value();
+  }
+  EXPECT_GT(with_segments, 50);
+  EXPECT_GT(with_alarm, 50);
 }
 
 }  // namespace

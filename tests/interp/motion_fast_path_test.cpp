@@ -4,7 +4,7 @@
 // side by side, must give the same motion blocks field by field (doubles bit for bit), the same
 // positions, the same return values and the same alarms. The fast builder is told what the
 // interpreter tells it (settingsMayChange) only where the interpreter would: after a change that
-// a plain line cannot make; changes a plain line makes (G0..G3, F) are not announced.
+// a plain line cannot make; changes a plain line makes (G0..G3, F, G40..G42) are not announced.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -94,8 +94,8 @@ bool change(Random& next, ModalState& modal, Side& a, Side& b) {
       modal.feed = next(8) == 0 ? 0.0 : 100.0 + next(5);  // F: a plain line's word
       return false;
     case 2:
-      modal.trc = static_cast<core::TrcMode>(next(3));
-      break;
+      modal.trc = static_cast<core::TrcMode>(next(3));  // G40..G42: a plain line's word
+      return false;
     case 3:
       modal.offn = values[next(6)];
       modal.disc = values[next(6)];
