@@ -7,6 +7,7 @@
 
 #include "trc/compensation_internal.hpp"
 #include "trc/radius_compensation.hpp"
+#include "trc/usual_element.hpp"
 
 namespace ncoffset::trc {
 

@@ -22,30 +22,6 @@ namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
 
-namespace {
-// The block's plane element in program coordinates (toElement without the metric; inlined into
-// compensateInto, which writes it straight into the slot, §31).
-NCOFFSET_INLINE_STEP Element planeElement(const MotionBlock& m) {
-  PlaneAxes pa = planeAxes(m.plane);
-  Element e;
-  e.p0 = {m.start[pa.abscissa], m.start[pa.ordinate]};
-  e.p1 = {m.end[pa.abscissa], m.end[pa.ordinate]};
-  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
-    e.arc = true;
-    e.c = {m.centre[pa.abscissa], m.centre[pa.ordinate]};
-    e.ccw = m.motion == Motion::G3;
-    e.turns = m.turns;
-  }
-  return e;
-}
-}  // namespace
-
-Element RadiusCompensation::toElement(const MotionBlock& m) const {
-  Element e = planeElement(m);
-  if (!metric_.identity) toMetric(e);
-  return e;
-}
-
 void RadiusCompensation::toMetric(Element& e) const {
   // A scaling frame: the machine's lengths (plane_metric.hpp).
   e.p0 = metric_.to(e.p0);

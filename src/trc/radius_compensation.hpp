@@ -167,6 +167,7 @@ class RadiusCompensation final : public core::Stage {
   }
 
   // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.
+  // (Defined in usual_element.hpp, which every caller includes.)
   geom::Element toElement(const core::MotionBlock& m) const;
   // Program coordinates to the machine's lengths (a scaling frame; not inlined: rare).
   [[gnu::noinline]] void toMetric(geom::Element& e) const;

@@ -1,6 +1,7 @@
 // The usual element of the radius compensation window: one compensation value, no scaling
 // frame. Its steps are inline here for compensateInto (pieces.cpp) and motionOn
-// (radius_compensation.cpp), which builds it without a call (docs/performance.md §42).
+// (radius_compensation.cpp), which builds it without a call (docs/performance.md §42); and a
+// block's plane element (toElement), inline for every caller.
 #pragma once
 
 #include "core/inline_step.hpp"
@@ -8,6 +9,29 @@
 #include "trc/radius_compensation.hpp"
 
 namespace ncoffset::trc {
+
+// The block's plane element in program coordinates (toElement without the metric; inlined into
+// compensateInto, which writes it straight into the slot, §31).
+NCOFFSET_INLINE_STEP geom::Element planeElement(const core::MotionBlock& m) {
+  PlaneAxes pa = planeAxes(m.plane);
+  geom::Element e;
+  e.p0 = {m.start[pa.abscissa], m.start[pa.ordinate]};
+  e.p1 = {m.end[pa.abscissa], m.end[pa.ordinate]};
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+    e.arc = true;
+    e.c = {m.centre[pa.abscissa], m.centre[pa.ordinate]};
+    e.ccw = m.motion == Motion::G3;
+    e.turns = m.turns;
+  }
+  return e;
+}
+
+// (Inline: the approach and the retraction write it straight into the slot or a local, §42.)
+inline geom::Element RadiusCompensation::toElement(const core::MotionBlock& m) const {
+  geom::Element e = planeElement(m);
+  if (!metric_.identity) toMetric(e);
+  return e;
+}
 
 NCOFFSET_INLINE_STEP void RadiusCompensation::startPiece(Piece& p, double r0, double r1, long index,
                                                          bool restart) const {
