@@ -176,13 +176,6 @@ std::vector<Crossing> intersectCircles(const Element& e1, const Element& e2, con
   return out;
 }
 
-// An arc's change of radius from its start to its end (0: a line, or a circle).
-double radiusChange(const Element& e) {
-  if (!e.arc) return 0;
-  const double d = length(e.p1 - e.c) - e.radius();
-  return std::fabs(d) > tol::kNumeric * (1 + e.radius()) ? d : 0;
-}
-
 // The element's circle at the spiral's radius at fraction u (beyond its ends the spiral goes
 // on: a row from a point of an extension to a point of the element is the same spiral).
 Element atFraction(const Element& e, double change, double u) {
@@ -192,6 +185,12 @@ Element atFraction(const Element& e, double change, double u) {
   return o;
 }
 }  // namespace
+
+double radiusChange(const Element& e) {
+  if (!e.arc) return 0;
+  const double d = length(e.p1 - e.c) - e.radius();
+  return std::fabs(d) > tol::kNumeric * (1 + e.radius()) ? d : 0;
+}
 
 std::vector<Crossing> intersect(const Element& e1, const Element& e2) {
   const Param q1 = paramOf(e1), q2 = paramOf(e2);

@@ -169,6 +169,30 @@ inline bool joinedLinesMiss(const Element& e1, const Element& e2, FractionTest o
          !passesTest(on1, 1.0, length(e1.p1 - e1.p0));
 }
 
+// An arc's change of radius from its start to its end (0: a line, or a circle; else a spiral,
+// which intersect follows in steps).
+double radiusChange(const Element& e);
+
+// A line joined to the circle of an arc (not a spiral) at one of its own ends, whose crossings
+// with that circle filteredCrossings would all refuse: `into` (the approach line, nearestCrossing
+// (line, arc) with tol::insideElement on the line): the line ends at the arc's start, running into
+// the circle; else (the retraction line, nearestCrossing(arc, line) with tol::afterStart on the
+// line): it starts at the arc's end, running out of it. A line entering a circle at E meets it
+// again beyond E, one leaving it before E; the other crossing is computed at E within far less
+// than tol::kPoint once the line's slope to the circle, the distance w / |line| of that other
+// crossing from E, exceeds 1e-4 (1 + G) with G = |centre - line start|^2 + radius^2 (the
+// rounding of crossingPoints is some 1e-16 G / (w / |line|)). Squares: no root computed
+// (docs/performance.md §42).
+inline bool joinedLineArcMiss(const Element& line, const Element& arc, bool into) {
+  const Vec2 at = into ? arc.p0 : arc.p1;  // where the line must end / start
+  const Vec2 end = into ? line.p1 : line.p0;
+  if (line.arc || !arc.arc || end.a != at.a || end.o != at.o) return false;
+  const Vec2 d = line.p1 - line.p0, f = line.p0 - arc.c, rv = arc.p0 - arc.c;
+  const double w = into ? -dot(at - arc.c, d) : dot(f, d);  // > 0: in / out
+  const double g = 1e-4 * (1 + dot(f, f) + dot(rv, rv));
+  return w > 0 && w * w > g * g * dot(d, d) && radiusChange(arc) == 0;
+}
+
 template <typename Key>
 std::optional<Crossing> nearestCrossing(const Element& e1, const Element& e2, FractionTest on1,
                                         FractionTest on2, Key key) {

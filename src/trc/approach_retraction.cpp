@@ -7,6 +7,7 @@
 
 #include "trc/compensation_internal.hpp"
 #include "trc/radius_compensation.hpp"
+#include "trc/usual_element.hpp"
 
 namespace ncoffset::trc {
 
@@ -57,7 +58,10 @@ void RadiusCompensation::approachLine(Piece& approach, Piece& first) {
     // NORM: one straight line to the normal point of the first element (details Q1); if it
     // cuts the first equidistant earlier, the intersection nearest the start of the line
     // replaces that point (G460).
-    // (The two fraction tests first: the arc's angles only for a crossing inside the line.)
+    // (The two fraction tests first: the arc's angles only for a crossing inside the line. A
+    // line running into the first arc's circle at its start has none: not searched, §42.)
+    if (!general_paths_ && geom::joinedLineArcMiss(approach.compensated, first.compensated, true))
+      return keepRaw(approach);
     auto best = geom::nearestCrossing(approach.compensated, first.compensated, tol::insideElement,
                                       tol::onElement, [](const geom::Crossing& x) { return x.u1; });
     if (best) approach.compensated.p1 = first.compensated.p0 = best->p;
@@ -137,16 +141,18 @@ void RadiusCompensation::retract(const MotionBlock& m) {
   // (the one nearest the end of the equidistant) replaces the normal point (details Q1).
   Piece& fin = window_.back();
   retract.p0 = fin.compensated.p1;
-  if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > tol::kPoint) {
+  // (A line running out of the last arc's circle at its end has no such crossing, §42.)
+  if (!fin.approach && !fin.emitted && geom::length(retract.p1 - retract.p0) > tol::kPoint &&
+      (general_paths_ || !geom::joinedLineArcMiss(retract, fin.compensated, false))) {
     auto best = geom::nearestCrossing(fin.compensated, retract, onBeforeEnd, afterStartOn,
                                       [](const geom::Crossing& x) { return -x.u1; });
     if (best) fin.compensated.p1 = best->p;
     retract.p0 = fin.compensated.p1;
   }
   flushAll();
-  MotionBlock line = lineToEnd(m, retract);
-  detail::keepTipAt(line, core::kTipStart);
-  emit(line);
+  lineToEnd(line_, m, retract);
+  detail::keepTipAt(line_, core::kTipStart);
+  emit(line_);
   state_ = State::Off;
 }
 

@@ -16,6 +16,7 @@
 
 #include "trc/compensation_internal.hpp"
 #include "trc/radius_compensation.hpp"
+#include "trc/usual_element.hpp"
 
 namespace ncoffset::trc {
 
@@ -59,22 +60,16 @@ void RadiusCompensation::emitShifted(const MotionBlock& m) {
   window_.clear();
   maybe_open_ = true;
   Piece& p = window_.pushBack();
-  p.index = ++count_;
-  p.valid = true;
-  p.open_before = p.approach = p.restart = false;
-  p.strategy = core::TrcStrategy::G460;
-  p.transition.clear();
-  p.waiting.clear();
+  const double r = std::fabs(m.trc.radius);
+  startPiece(p, r, r, ++count_, false);
+  p.side = sideOf(m.trc);  // (the block's, not the stage's)
   p.block = m;
   p.programmed = toElement(m);
-  p.r0 = p.r1 = std::fabs(m.trc.radius);
-  p.side = sideOf(m.trc);
   p.compensated = p.programmed;
   p.compensated.p0 = p.programmed.p0 + constant_offset_;
   p.compensated.p1 = p.programmed.p1 + constant_offset_;
   p.compensated.c = p.programmed.c + constant_offset_;  // a circle keeps its radius
   keepRaw(p);
-  p.emitted = false;
   emitPiece(p);
   p.emitted = true;  // kept only for the next block to start from (and a G40 line)
 }

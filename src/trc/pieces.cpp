@@ -2,10 +2,17 @@
 // element, its equidistant (also with a compensation value that changes within the block), and
 // a compensated element back as a block of the channel.
 #include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
 
 #include "core/inline_step.hpp"
 #include "trc/compensation_internal.hpp"
 #include "trc/radius_compensation.hpp"
+#include "trc/usual_element.hpp"
 
 namespace ncoffset::trc {
 
@@ -14,30 +21,6 @@ using core::TrcStrategy;
 namespace tol = geom::tol;
 using geom::Element;
 using geom::Vec2;
-
-namespace {
-// The block's plane element in program coordinates (toElement without the metric; inlined into
-// compensateInto, which writes it straight into the slot, §31).
-NCOFFSET_INLINE_STEP Element planeElement(const MotionBlock& m) {
-  PlaneAxes pa = planeAxes(m.plane);
-  Element e;
-  e.p0 = {m.start[pa.abscissa], m.start[pa.ordinate]};
-  e.p1 = {m.end[pa.abscissa], m.end[pa.ordinate]};
-  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
-    e.arc = true;
-    e.c = {m.centre[pa.abscissa], m.centre[pa.ordinate]};
-    e.ccw = m.motion == Motion::G3;
-    e.turns = m.turns;
-  }
-  return e;
-}
-}  // namespace
-
-Element RadiusCompensation::toElement(const MotionBlock& m) const {
-  Element e = planeElement(m);
-  if (!metric_.identity) toMetric(e);
-  return e;
-}
 
 void RadiusCompensation::toMetric(Element& e) const {
   // A scaling frame: the machine's lengths (plane_metric.hpp).
@@ -63,19 +46,18 @@ MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& 
       like, core::planeGeometry(like, metric_.identity ? e : fromMetric(e), tip_at));
 }
 
-MotionBlock RadiusCompensation::lineToEnd(const MotionBlock& m, const Element& e) const {
-  MotionBlock b = m;  // (one object returned on both paths: no second copy)
+void RadiusCompensation::lineToEnd(MotionBlock& b, const MotionBlock& m, const Element& e) const {
   if (!metric_.identity || general_paths_ || m.motion == Motion::G2 || m.motion == Motion::G3) {
     b = toBlock(m, e);
-    return b;
+    return;
   }
+  copyBlock(b, m);
   // toBlock without the geometry in between (§36): of the block only the plane start changes
   // (`e` ends at the block's own end, and lines stay G0/G1).
   const PlaneAxes pa = planeAxes(m.plane);
   b.start[pa.abscissa] = e.p0.a;
   b.start[pa.ordinate] = e.p0.o;
   b.tip_at = m.has_tip ? core::kTipBoth : core::kTipNone;
-  return b;
 }
 
 MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const {
@@ -84,6 +66,47 @@ MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const 
   return toBlock(like, e);
 }
 
+static_assert(std::is_trivially_copyable_v<MotionBlock>, "copyBlockWide copies its bytes");
+
+#if defined(__x86_64__) && defined(__GNUC__)
+namespace {
+// The block's whole 32-byte runs (a fold: no loop left to unroll).
+template <std::size_t... I>
+[[gnu::target("avx"), gnu::always_inline]] inline void copyRuns(unsigned char* to,
+                                                                const unsigned char* from,
+                                                                std::index_sequence<I...>) {
+  (_mm256_storeu_si256(reinterpret_cast<__m256i*>(to + 32 * I),
+                       _mm256_loadu_si256(reinterpret_cast<const __m256i*>(from + 32 * I))),
+   ...);
+}
+}  // namespace
+
+[[gnu::target("avx")]] void RadiusCompensation::copyBlockWide(MotionBlock& to,
+                                                              const MotionBlock& from) {
+  constexpr std::size_t kSize = sizeof(MotionBlock), kRuns = kSize / 32;
+  static_assert(kSize >= 32);
+  auto* t = reinterpret_cast<unsigned char*>(&to);
+  const auto* f = reinterpret_cast<const unsigned char*>(&from);
+  copyRuns(t, f, std::make_index_sequence<kRuns>{});
+  // The rest: the last 32 bytes (over part of the last run, which holds the same bytes).
+  if constexpr (kSize % 32 != 0)
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(t + kSize - 32),
+                        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(f + kSize - 32)));
+}
+
+bool RadiusCompensation::wideCopyAvailable() {
+  __builtin_cpu_init();  // (called from a static initializer)
+  return __builtin_cpu_supports("avx");
+}
+#else
+void RadiusCompensation::copyBlockWide(MotionBlock& to, const MotionBlock& from) {
+  to = from;
+}
+bool RadiusCompensation::wideCopyAvailable() {
+  return false;
+}
+#endif
+
 RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, double r0,
                                                          double r1) const {
   Piece p;
@@ -91,68 +114,11 @@ RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, d
   return p;
 }
 
-NCOFFSET_INLINE_STEP void RadiusCompensation::startPiece(Piece& p, const MotionBlock& m, double r0,
-                                                         double r1) const {
-  // Every field is set: `p` may be a reused slot of the window (its vectors keep their memory).
-  p.index = 0;
-  p.valid = true;
-  p.open_before = p.approach = p.restart = p.emitted = false;
-  p.strategy = TrcStrategy::G460;
-  p.transition.clear();
-  p.waiting.clear();
-  p.block = m;
-  p.r0 = r0;
-  p.r1 = r1;
-  p.side = side();
-}
-
-NCOFFSET_INLINE_STEP void RadiusCompensation::compensateConstant(Piece& p, const MotionBlock& m,
-                                                                 double r) const {
-  // planeElement and equidistantInto with the same arithmetic, from values in registers: each
-  // field of the slot written once (the general path writes the element, reads it back and
-  // copies it whole into the equidistant).
-  const PlaneAxes pa = planeAxes(m.plane);
-  const Vec2 a{m.start[pa.abscissa], m.start[pa.ordinate]};
-  const Vec2 b{m.end[pa.abscissa], m.end[pa.ordinate]};
-  const double d = p.side * r;
-  Element& e = p.programmed;
-  Element& o = p.compensated;
-  e.p0 = a;
-  e.p1 = b;
-  if (m.motion != Motion::G2 && m.motion != Motion::G3) {
-    e.arc = e.ccw = false;
-    e.c = {};
-    e.turns = 0;
-    const Vec2 n = geom::leftNormal(geom::unit(b - a));
-    o = e;
-    o.p0 = a + d * n;
-    o.p1 = b + d * n;
-    return;
-  }
-  const Vec2 c{m.centre[pa.abscissa], m.centre[pa.ordinate]};
-  e.arc = true;
-  e.c = c;
-  e.ccw = m.motion == Motion::G3;
-  e.turns = m.turns;
-  const double r0 = geom::length(a - c), r1 = geom::length(b - c);
-  const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
-  if (q0 <= tol::kPoint || q1 <= tol::kPoint) {  // r <= R: none (the slot's element stays)
-    p.valid = false;
-    return;
-  }
-  o = e;
-  o.p0 = c + (q0 / r0) * (a - c);
-  o.p1 = c + (q1 / r1) * (b - c);
-}
-
-void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0,
-                                        double r1) const {
-  startPiece(p, m, r0, r1);
-  if (r0 == r1 && metric_.identity && !general_paths_) {  // the usual element (§36)
-    compensateConstant(p, m, r0);
-    keepRaw(p);
-    return;
-  }
+void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0, double r1,
+                                        long index, bool restart) const {
+  if (r0 == r1 && metric_.identity && !general_paths_)  // the usual element (§36)
+    return compensateUsual(p, m, r0, index, restart);
+  startPiece(p, r0, r1, index, restart);
   p.programmed = planeElement(m);
   if (!metric_.identity) toMetric(p.programmed);
   const double s = p.side;
@@ -178,6 +144,7 @@ void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r
     p.compensated.p1 = e.c + (rb / geom::length(e.p1 - e.c)) * (e.p1 - e.c);
   }
   keepRaw(p);
+  copyBlock(p.block, m);
 }
 
 Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const {

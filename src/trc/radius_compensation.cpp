@@ -9,6 +9,7 @@
 
 #include "core/inline_step.hpp"
 #include "trc/compensation_internal.hpp"
+#include "trc/usual_element.hpp"
 
 namespace ncoffset::trc {
 
@@ -118,7 +119,7 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
   constant_ = false;  // (a G40 while CUTCONON was active left it set)
   setSettings(m.trc);
   window_.clear();  // (empty: the window is written and cleared when compensation ends)
-  window_.pushBack().block = m;
+  copyBlock(window_.pushBack().block, m);
   sel_plane_ = m.plane;
   sel_frame_ = m.frame;
   sel_groups_ = groupBytes(m.trc);
@@ -169,19 +170,22 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
 }
 
 // (Here, inlined into motionOn, its one caller: once a block, docs/performance.md §36.)
-NCOFFSET_INLINE_STEP void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m) {
+NCOFFSET_INLINE_STEP void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m,
+                                                             long index, bool restart) {
   const double old_side = side(), old_r = std::fabs(settings_.radius);
   const double new_r = std::fabs(m.trc.radius);
   setSettings(m.trc);
-  if (side_ != old_side) {
-    // G41 <-> G42 (or the sign of the value) while active: the last element ends on its normal,
-    // the new side starts on the normal at this block's start (PM-NC "change of compensation
-    // direction"; details Q8 for the sign).
-    compensateInto(p, m, new_r, new_r);
-    p.restart = true;
-    return;
-  }
-  compensateInto(p, m, old_r, std::fabs(old_r - new_r) <= geom::tol::kPoint ? old_r : new_r);
+  double r0 = old_r, r1 = std::fabs(old_r - new_r) <= geom::tol::kPoint ? old_r : new_r;
+  // G41 <-> G42 (or the sign of the value) while active: the last element ends on its normal,
+  // the new side starts on the normal at this block's start (PM-NC "change of compensation
+  // direction"; details Q8 for the sign).
+  const bool new_side = side_ != old_side;
+  if (new_side) r0 = r1 = new_r;
+  // The usual element built here, without a call (§42).
+  if (r0 == r1 && metric_.identity && !general_paths_)
+    compensateUsual(p, m, r0, index, restart || new_side);
+  else
+    compensateInto(p, m, r0, r1, index, restart || new_side);
 }
 
 void RadiusCompensation::motionOn(const MotionBlock& m) {
@@ -200,9 +204,7 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
     return;
   }
   Piece& next = window_.pushBack();
-  compensateNext(next, m);
-  next.index = ++count_;
-  next.restart = next.restart || restart_next_;
+  compensateNext(next, m, ++count_, restart_next_);
   restart_next_ = false;
   Piece& cur = window_[window_.size() - 2];
   if (!joinTangent(cur, next)) connect(cur, next);  // a tangent junction without the call

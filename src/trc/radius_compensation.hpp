@@ -55,7 +55,10 @@ class RadiusCompensation final : public core::Stage {
   bool active() const { return state_ != State::Off; }
   // Tests only (tests/trc/compensation_fast_path_test.cpp): true makes every block take the
   // general paths, the twins of the fast ones, so that a test compares the two outputs.
-  static void useGeneralPaths(bool on) { general_paths_ = on; }
+  static void useGeneralPaths(bool on) {
+    general_paths_ = on;
+    wide_copy_ = !on && wideCopyAvailable();
+  }
 
  private:
   enum class State { Off, Selecting, On };
@@ -102,6 +105,19 @@ class RadiusCompensation final : public core::Stage {
     geom::Box box_;                             // box(), when box_known
     bool box_known = false;
   };
+  // Copies block `from` into `to` (a slot's block, the retraction line): with AVX in 14 loads
+  // and 14 stores of up to 32 bytes, not GCC's `rep movsq` of 54 quadwords, which counts 54
+  // instructions and starts in microcode (docs/performance.md §42); `to = from` without AVX and
+  // with the general paths (the twin).
+  static void copyBlock(core::MotionBlock& to, const core::MotionBlock& from) {
+    if (wide_copy_)
+      copyBlockWide(to, from);
+    else
+      to = from;
+  }
+  static void copyBlockWide(core::MotionBlock& to, const core::MotionBlock& from);
+  static bool wideCopyAvailable();
+
   // `p.compensated` as it is now is the whole equidistant: its ends are kept (raw_start,
   // raw_end) and its box computed when asked (with the general paths at once, the twin).
   static void keepRaw(Piece& p) {
@@ -151,13 +167,15 @@ class RadiusCompensation final : public core::Stage {
   }
 
   // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.
+  // (Defined in usual_element.hpp, which every caller includes.)
   geom::Element toElement(const core::MotionBlock& m) const;
   // Program coordinates to the machine's lengths (a scaling frame; not inlined: rare).
   [[gnu::noinline]] void toMetric(geom::Element& e) const;
   core::MotionBlock toBlock(const core::MotionBlock& like, const geom::Element& e) const;
   // toBlock(m, e) for a line `e` from anywhere to the plane end point of block m itself (the
   // retraction line); the fast twin of toBlock.
-  core::MotionBlock lineToEnd(const core::MotionBlock& m, const geom::Element& e) const;
+  // Into `b` (the stage's line_, no block constructed).
+  void lineToEnd(core::MotionBlock& b, const core::MotionBlock& m, const geom::Element& e) const;
   // Element `e` in the machine's lengths back in program coordinates (a scaling frame: rare).
   [[gnu::noinline]] geom::Element fromMetric(const geom::Element& e) const;
   // A block of `like` that keeps its applicate motion but stands at plane point `at`.
@@ -167,17 +185,23 @@ class RadiusCompensation final : public core::Stage {
   // emitPiece with blocks before or after the element, or a scaling frame (out of line).
   [[gnu::noinline]] void emitWithBlocks(const Piece& p, std::uint8_t tip_at);
   Piece compensate(const core::MotionBlock& m, double r0, double r1) const;
-  void compensateInto(Piece& p, const core::MotionBlock& m, double r0, double r1) const;
+  // (`index` and `restart`: the slot's fields, set with the others.)
+  void compensateInto(Piece& p, const core::MotionBlock& m, double r0, double r1, long index = 0,
+                      bool restart = false) const;
   // compensateInto's steps: the slot's fields but the geometry; the geometry of the usual element
   // (one value, no scaling frame), the fast twin of compensateInto's general path.
-  void startPiece(Piece& p, const core::MotionBlock& m, double r0, double r1) const;
+  void startPiece(Piece& p, double r0, double r1, long index, bool restart) const;
   void compensateConstant(Piece& p, const core::MotionBlock& m, double r) const;
+  // The usual element whole (usual_element.hpp): compensateInto's fast path, inline.
+  void compensateUsual(Piece& p, const core::MotionBlock& m, double r, long index,
+                       bool restart) const;
   // The equidistant at the constant value the corner calculation uses (details Q8: the end
   // value of the first element, the start value of the second).
   geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
   // The next element with its compensation value (a change spreads over the block, Q8) and
   // side (a change of side starts anew at the block's start, like a selection).
-  void compensateNext(Piece& p, const core::MotionBlock& m);
+  // (`restart`: the element starts anew in any case, after STOPRE.)
+  void compensateNext(Piece& p, const core::MotionBlock& m, long index, bool restart);
 
   // --- Corners (corners.cpp, W1 2.4.3, 2.4.5, details Q3/Q4).
   // Joins `next` to the last element of the window (corner).
@@ -276,6 +300,7 @@ class RadiusCompensation final : public core::Stage {
   std::uint16_t sel_groups_ = 0;            // groupBytes
   bool sel_frame_plane_ = false;            // G group 22: CUT2DF
   std::vector<core::MotionBlock> waiting_;  // blocks without plane motion after the selection
+  core::MotionBlock line_;                  // the retraction line (lineToEnd): not constructed anew
   PieceWindow<Piece> window_;
   long count_ = 0;              // traversing blocks since the selection
   bool restart_next_ = false;   // after STOPRE: the next element starts anew
@@ -293,7 +318,8 @@ class RadiusCompensation final : public core::Stage {
   // looks at the new one only). Set by every change of the window but motionOn's and the
   // selection's (bottleneck detection and release close and remove, never open).
   bool maybe_open_ = true;
-  static inline bool general_paths_ = false;  // useGeneralPaths
+  static inline bool general_paths_ = false;            // useGeneralPaths
+  static inline bool wide_copy_ = wideCopyAvailable();  // copyBlock: AVX, not the general paths
 };
 
 }  // namespace ncoffset::trc

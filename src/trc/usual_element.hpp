@@ -1,0 +1,101 @@
+// The usual element of the radius compensation window: one compensation value, no scaling
+// frame. Its steps are inline here for compensateInto (pieces.cpp) and motionOn
+// (radius_compensation.cpp), which builds it without a call (docs/performance.md §42); and a
+// block's plane element (toElement), inline for every caller.
+#pragma once
+
+#include "core/inline_step.hpp"
+#include "trc/compensation_internal.hpp"
+#include "trc/radius_compensation.hpp"
+
+namespace ncoffset::trc {
+
+// The block's plane element in program coordinates (toElement without the metric; inlined into
+// compensateInto, which writes it straight into the slot, §31).
+NCOFFSET_INLINE_STEP geom::Element planeElement(const core::MotionBlock& m) {
+  PlaneAxes pa = planeAxes(m.plane);
+  geom::Element e;
+  e.p0 = {m.start[pa.abscissa], m.start[pa.ordinate]};
+  e.p1 = {m.end[pa.abscissa], m.end[pa.ordinate]};
+  if (m.motion == Motion::G2 || m.motion == Motion::G3) {
+    e.arc = true;
+    e.c = {m.centre[pa.abscissa], m.centre[pa.ordinate]};
+    e.ccw = m.motion == Motion::G3;
+    e.turns = m.turns;
+  }
+  return e;
+}
+
+// (Inline: the approach and the retraction write it straight into the slot or a local, §42.)
+inline geom::Element RadiusCompensation::toElement(const core::MotionBlock& m) const {
+  geom::Element e = planeElement(m);
+  if (!metric_.identity) toMetric(e);
+  return e;
+}
+
+NCOFFSET_INLINE_STEP void RadiusCompensation::startPiece(Piece& p, double r0, double r1, long index,
+                                                         bool restart) const {
+  // Every field is set: `p` may be a reused slot of the window (its vectors keep their memory).
+  p.index = index;
+  p.valid = true;
+  p.restart = restart;
+  p.open_before = p.approach = p.emitted = false;
+  p.strategy = core::TrcStrategy::G460;
+  p.transition.clear();
+  p.waiting.clear();
+  p.r0 = r0;
+  p.r1 = r1;
+  p.side = side();
+}
+
+NCOFFSET_INLINE_STEP void RadiusCompensation::compensateConstant(Piece& p,
+                                                                 const core::MotionBlock& m,
+                                                                 double r) const {
+  // planeElement and equidistantInto with the same arithmetic, from values in registers: each
+  // field of the slot written once (the general path writes the element, reads it back and
+  // copies it whole into the equidistant).
+  const PlaneAxes pa = planeAxes(m.plane);
+  const geom::Vec2 a{m.start[pa.abscissa], m.start[pa.ordinate]};
+  const geom::Vec2 b{m.end[pa.abscissa], m.end[pa.ordinate]};
+  const double d = p.side * r;
+  geom::Element& e = p.programmed;
+  geom::Element& o = p.compensated;
+  e.p0 = a;
+  e.p1 = b;
+  if (m.motion != Motion::G2 && m.motion != Motion::G3) {
+    e.arc = e.ccw = false;
+    e.c = {};
+    e.turns = 0;
+    const geom::Vec2 n = geom::leftNormal(geom::unit(b - a));
+    o = e;
+    o.p0 = a + d * n;
+    o.p1 = b + d * n;
+    return;
+  }
+  const geom::Vec2 c{m.centre[pa.abscissa], m.centre[pa.ordinate]};
+  e.arc = true;
+  e.c = c;
+  e.ccw = m.motion == Motion::G3;
+  e.turns = m.turns;
+  const double r0 = geom::length(a - c), r1 = geom::length(b - c);
+  const double q0 = e.ccw ? r0 - d : r0 + d, q1 = e.ccw ? r1 - d : r1 + d;
+  if (q0 <= geom::tol::kPoint || q1 <= geom::tol::kPoint) {
+    p.valid = false;  // r <= R: none (the slot's element stays)
+    return;
+  }
+  o = e;
+  o.p0 = c + (q0 / r0) * (a - c);
+  o.p1 = c + (q1 / r1) * (b - c);
+}
+
+// The slot's block is copied last: nothing is kept in registers across the copy's call.
+NCOFFSET_INLINE_STEP void RadiusCompensation::compensateUsual(Piece& p, const core::MotionBlock& m,
+                                                              double r, long index,
+                                                              bool restart) const {
+  startPiece(p, r, r, index, restart);
+  compensateConstant(p, m, r);
+  keepRaw(p);
+  copyBlock(p.block, m);
+}
+
+}  // namespace ncoffset::trc
