@@ -1,7 +1,9 @@
 // The CSV writers (the contract of design.md), in their own translation unit: CsvWriter's row
 // is the hot path of `ncoffset PROGRAM`, and GCC inlines writeShortest and writeUnsigned into
 // it only while little else here calls them (keep it so: docs/performance.md).
+#include <bit>
 #include <charconv>
+#include <cstdint>
 #include <cstring>
 
 #include "out/shortest_number.hpp"
@@ -15,6 +17,9 @@ namespace {
 constexpr size_t kMaxRow = 320;
 // With --decimals: numbers of at most kRoundedRoom characters (writeRounded).
 static_assert(24 + 7 * kRoundedRoom <= kMaxRow);
+
+// The byte of ",G0?" that holds the digit, as a 32-bit number's bits / 8 (CsvWriter::segment).
+constexpr int kDigitByte = std::endian::native == std::endian::little ? 2 : 1;
 
 constexpr const char* kHeader = "line,motion,x,y,z,cx,cy,cz,feed\n";
 
@@ -105,8 +110,13 @@ void CsvWriter::segment(const Segment& s) {
   const Motion motion = s.motion;
   static_assert(static_cast<int>(Motion::G0) == 0 && static_cast<int>(Motion::G3) == 3);
   if (motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call
-    const char field[4] = {',', 'G', static_cast<char>('0' + static_cast<int>(motion)), 0};
-    std::memcpy(p, field, 4);  // one store; the fourth byte is overwritten by the next field
+    // ",G0" and a fourth byte (overwritten by the next field) as one number, the digit added
+    // to it: one store (the bytes in memory order, as the row has them).
+    const char g0[4] = {',', 'G', '0', 0};
+    std::uint32_t field;
+    std::memcpy(&field, g0, 4);
+    field += static_cast<std::uint32_t>(motion) << (kDigitByte * 8);
+    std::memcpy(p, &field, 4);
     p += 3;
   } else {  // G33, G331, G63, ...
     *p++ = ',';

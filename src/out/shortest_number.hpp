@@ -22,29 +22,33 @@ inline constexpr char kDigitPairs[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-// Writes v < 10000 in decimal and returns the end.
-inline char* writeBelow10000(char* out, unsigned v) {
-  if (v < 100) {
-    if (v < 10) {
-      *out = static_cast<char>('0' + v);
-      return out + 1;
+// The digits of 0..9999, four bytes each (the number's digits first, zeros after them), and
+// their count.
+struct FourDigits {
+  char text[10000][4] = {};
+  unsigned char len[10000] = {};
+  constexpr FourDigits() {
+    for (int v = 0; v < 10000; ++v) {
+      const int n = v < 10 ? 1 : v < 100 ? 2 : v < 1000 ? 3 : 4;
+      len[v] = static_cast<unsigned char>(n);
+      for (int i = n - 1, rest = v; i >= 0; --i, rest /= 10)
+        text[v][i] = static_cast<char>('0' + rest % 10);
+      for (int i = n; i < 4; ++i) text[v][i] = '0';
     }
-    std::memcpy(out, kDigitPairs + 2 * v, 2);
-    return out + 2;
   }
-  const unsigned hi = v / 100, lo = v % 100;
-  if (hi < 10) {
-    *out++ = static_cast<char>('0' + hi);
-  } else {
-    std::memcpy(out, kDigitPairs + 2 * hi, 2);
-    out += 2;
-  }
-  std::memcpy(out, kDigitPairs + 2 * lo, 2);
-  return out + 2;
+};
+inline constexpr FourDigits kFourDigits{};
+
+// Writes v < 10000 in decimal and returns the end: the four bytes of the table at once (room
+// for them at `out`; what lies past the digits is overwritten by what follows or cut off),
+// without a test of the number of digits or a division (docs/performance.md §43).
+inline char* writeBelow10000(char* out, unsigned v) {
+  std::memcpy(out, kFourDigits.text[v], 4);
+  return out + kFourDigits.len[v];
 }
 
-// Writes v in decimal and returns the end; below 1e8 (coordinates, line numbers, feeds) from
-// the pair table without a loop.
+// Writes v in decimal and returns the end (room for ten characters at `out`); below 1e8
+// (coordinates, line numbers, feeds) from the tables without a loop.
 inline char* writeUnsigned(char* out, unsigned v) {
   if (v < 10000) return writeBelow10000(out, v);
   if (v < 100000000) {
@@ -57,10 +61,24 @@ inline char* writeUnsigned(char* out, unsigned v) {
   return std::to_chars(out, out + 10, v).ptr;
 }
 
-// Writes v < 1000 as exactly three digits ("007") and returns the end.
+// 0..999 as exactly three digits ("007") and a fourth byte ('0'), four bytes each.
+struct ThreeDigits {
+  char text[1000][4] = {};
+  constexpr ThreeDigits() {
+    for (int v = 0; v < 1000; ++v) {
+      text[v][0] = static_cast<char>('0' + v / 100);
+      text[v][1] = static_cast<char>('0' + v / 10 % 10);
+      text[v][2] = static_cast<char>('0' + v % 10);
+      text[v][3] = '0';
+    }
+  }
+};
+inline constexpr ThreeDigits kThreeDigits{};
+
+// Writes v < 1000 as exactly three digits ("007") and returns the end; the table's four bytes
+// at once (room for them at `out`, as writeBelow10000).
 inline char* writeThreeDigits(char* out, unsigned v) {
-  *out = static_cast<char>('0' + v / 100);
-  std::memcpy(out + 1, kDigitPairs + 2 * (v % 100), 2);
+  std::memcpy(out, kThreeDigits.text[v], 4);
   return out + 3;
 }
 
