@@ -14,6 +14,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "core/inline_step.hpp"
+
 namespace ncoffset::out {
 
 // "00" "01" ... "99": decimal digits two at a time.
@@ -115,7 +117,11 @@ inline int truncatedInt(double v) {
 // A whole number is the signed integer conversion of v itself (one instruction each way; -0
 // becomes 0, so it prints as 0): no absolute value, no test of the sign before it is known
 // to be needed (docs/performance.md §37).
-inline char* writeFixed(char* out, double v) {
+//
+// kSmall: only |v| < 10000 (else nullptr, possibly after a '-'), without a call (CsvWriter's
+// usual row, §43).
+template <bool kSmall = false>
+NCOFFSET_INLINE_STEP char* writeFixed(char* out, double v) {
   const int whole = truncatedInt(v);
   if (static_cast<double>(whole) == v) {
     auto u = static_cast<unsigned>(whole);
@@ -123,11 +129,12 @@ inline char* writeFixed(char* out, double v) {
       *out++ = '-';
       u = 0u - u;
     }
+    if constexpr (kSmall) return u < 10000 ? writeBelow10000(out, u) : nullptr;
     return writeUnsigned(out, u);
   }
   const double a = std::fabs(v);
-  if (!(a < 1e9)) return nullptr;  // also NaN
-  if (a < 1e-4) return nullptr;    // {fmt} writes these with an exponent
+  if (!(a < (kSmall ? 1e4 : 1e9))) return nullptr;  // also NaN
+  if (a < 1e-4) return nullptr;                     // {fmt} writes these with an exponent
   // Signed 64-bit conversions (one instruction each): m < 1e15 + 1.
   const auto m = static_cast<long long>(a * 1e6 + 0.5);
   if (static_cast<double>(m) / 1e6 != a) return nullptr;  // more than six decimals
@@ -135,7 +142,10 @@ inline char* writeFixed(char* out, double v) {
   const auto whole_part = static_cast<unsigned>(m / 1000000);
   // (Below 10000, the usual coordinate, the short writer: GCC inlines it, and kept the whole
   // writeUnsigned out of line here, §37.)
-  out = whole_part < 10000 ? writeBelow10000(out, whole_part) : writeUnsigned(out, whole_part);
+  if constexpr (kSmall)  // (a < 1e4 and m / 1e6 == a: whole_part < 10000)
+    out = writeBelow10000(out, whole_part);
+  else
+    out = whole_part < 10000 ? writeBelow10000(out, whole_part) : writeUnsigned(out, whole_part);
   const auto frac = static_cast<unsigned>(m % 1000000);  // not 0: v is no whole number
   // Two groups of three digits; at most three decimals (most CAM output) write only the first.
   // Trailing zeros are cut off by the table, without a loop over the digits.
