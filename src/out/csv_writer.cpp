@@ -1,9 +1,12 @@
 // The CSV writers (the contract of design.md), in their own translation unit: CsvWriter's row
 // is the hot path of `ncoffset PROGRAM`, and GCC inlines writeShortest and writeUnsigned into
 // it only while little else here calls them (keep it so: docs/performance.md).
+#include <bit>
 #include <charconv>
+#include <cstdint>
 #include <cstring>
 
+#include "core/inline_step.hpp"
 #include "out/shortest_number.hpp"
 #include "out/writers.hpp"
 
@@ -16,6 +19,9 @@ constexpr size_t kMaxRow = 320;
 // With --decimals: numbers of at most kRoundedRoom characters (writeRounded).
 static_assert(24 + 7 * kRoundedRoom <= kMaxRow);
 
+// The byte of ",G0?" that holds the digit, as a 32-bit number's bits / 8 (CsvWriter::segment).
+constexpr int kDigitByte = std::endian::native == std::endian::little ? 2 : 1;
+
 constexpr const char* kHeader = "line,motion,x,y,z,cx,cy,cz,feed\n";
 
 // ",v" at p; returns the end.
@@ -27,19 +33,38 @@ inline char* writeField(char* p, double v) {
 }  // namespace
 
 // v as writeShortest writes it; the memo's text when v equals its value (== : -0 and 0 are
-// both "0", NaN never equals). The whole 32 bytes are copied both ways, one fixed-size move
+// both "0", NaN never equals). The memo's 16 bytes are copied both ways, one fixed-size move
 // instead of a loop: the row has room for them (kMaxRow) and what lies past the number is
-// overwritten by the next field or cut off.
+// overwritten by the next field or cut off. A longer number is not kept (the memo then equals
+// no value; 16 bytes rather than writeShortest's 32: one move each way, §43).
 inline char* CsvWriter::writeMemo(char* p, double v, Memo& m) {
   if (v == m.value) {
     std::memcpy(p, m.text, sizeof m.text);
     return p + m.len;
   }
   char* const end = writeShortest(p, v);
-  m.value = v;
   m.len = static_cast<size_t>(end - p);
+  m.value = m.len <= sizeof m.text ? v : std::numeric_limits<double>::quiet_NaN();
   std::memcpy(m.text, p, sizeof m.text);
   return end;
+}
+
+// The memo's next line: its last digit incremented in place; "199" + 1 -> "200", and all nines
+// ("999") became zeros and get a leading one ("1000"). Inline, no call (§43).
+inline void CsvWriter::increment(LineMemo& m) {
+  ++m.value;
+  char* d = m.text + m.len - 1;
+  if (*d != '9') [[likely]] {
+    ++*d;
+    return;
+  }
+  while (*d == '9' && d != m.text) *d-- = '0';
+  if (*d != '9') {
+    ++*d;
+    return;
+  }
+  *d = '1';
+  m.text[m.len++] = '0';
 }
 
 // The 16 bytes of the text are copied at once (the row has room, as for writeMemo). A line
@@ -47,12 +72,7 @@ inline char* CsvWriter::writeMemo(char* p, double v, Memo& m) {
 inline char* CsvWriter::writeLine(char* p, int line) {
   LineMemo& m = line_;
   if (line == m.value + 1) [[likely]] {
-    m.value = line;
-    char& last = m.text[m.len - 1];
-    if (last != '9') [[likely]]
-      ++last;
-    else
-      carry(m);
+    increment(m);
   } else if (line != m.value) {
     char* const end = line >= 0 ? writeUnsigned(m.text, static_cast<unsigned>(line))
                                 : std::to_chars(m.text, m.text + 11, line).ptr;
@@ -62,18 +82,6 @@ inline char* CsvWriter::writeLine(char* p, int line) {
   const size_t len = m.len;  // (read before the copy: a store through `p` may alias it)
   std::memcpy(p, m.text, sizeof m.text);
   return p + len;
-}
-
-void CsvWriter::carry(LineMemo& m) {
-  // "199" + 1 -> "200"; all nines ("999") became zeros and get a leading one ("1000").
-  char* d = m.text + m.len - 1;
-  while (*d == '9' && d != m.text) *d-- = '0';
-  if (*d != '9') {
-    ++*d;
-    return;
-  }
-  *d = '1';
-  m.text[m.len++] = '0';
 }
 
 CsvWriter::CsvWriter(std::FILE* f) : w_(f) {
@@ -97,21 +105,104 @@ void CsvWriter::flushRows(bool sync) {
   rows_end_ = rows_.get();
 }
 
+// ",v" at p for |v| < 10000 with at most six decimals, else nullptr (no call).
+NCOFFSET_INLINE_STEP char* writeSmallField(char* p, double v) {
+  *p = ',';
+  return writeFixed<true>(p + 1, v);
+}
+
+// writeMemo for segment()'s usual row: a new value by writeFixed<true> (at most 12 characters,
+// "-9999.999999"), else nullptr.
+NCOFFSET_INLINE_STEP char* CsvWriter::writeSmallMemo(char* p, double v, Memo& m) {
+  if (v == m.value) {
+    std::memcpy(p, m.text, sizeof m.text);
+    return p + m.len;
+  }
+  char* const end = writeFixed<true>(p, v);
+  if (!end) return nullptr;
+  m.len = static_cast<size_t>(end - p);
+  m.value = v;
+  std::memcpy(m.text, p, sizeof m.text);
+  return end;
+}
+
 void CsvWriter::segment(const Segment& s) {
-  // Written in place at the end of the rows (room for one more: allocateRows).
-  char* const row = rows_end_;
-  char* p = writeLine(row, s.line);
-  // (The motion read once: a store through `p` may alias the segment, §40.)
+  // The usual row: the line of the row before or the next one, G0..G3, z, an arc
+  // centre's z and the feed as in the memos, no additional axes, numbers below 10000 with at
+  // most six decimals. Written without a call (so without registers to save: 17 instructions a
+  // row, docs/performance.md §43); any other row by generalSegment from the row's start.
   const Motion motion = s.motion;
+  const bool arc = motion == Motion::G2 || motion == Motion::G3;
+  const bool has_feed = s.has_feed;
+  const long long line = s.line;
+  LineMemo& l = line_;
+  const bool next = line == l.value + 1;  // (l.len > 0 then)
+  const bool usual = axis_room_ == 0 && motion <= Motion::G3 && (line == l.value || next);
+  if (!usual) [[unlikely]]
+    return generalSegment(s);
+  // (Values read before the stores through `p`, which may alias the segment and the memos.)
+  const double x = s.end.x, y = s.end.y, z = s.end.z;
+  const double cx = s.centre.x, cy = s.centre.y, cz = s.centre.z, feed = s.feed;
+  if (next) increment(l);
+  char* p = rows_end_;
+  std::memcpy(p, l.text, sizeof l.text);
+  p += l.len;
+  p = writeMotion(p, motion);
+  p = writeSmallField(p, x);
+  if (p) p = writeSmallField(p, y);
+  if (!p) [[unlikely]]  // (the line's memo holds this line now: written again as it is)
+    return generalSegment(s);
+  *p++ = ',';
+  p = writeSmallMemo(p, z, z_);
+  if (arc && p) {
+    p = writeSmallField(p, cx);
+    if (p) p = writeSmallField(p, cy);
+    if (p) {
+      *p++ = ',';
+      p = writeSmallMemo(p, cz, z_);  // in the plane: mostly z
+    }
+  } else if (p) {
+    *p++ = ',';
+    *p++ = ',';
+    *p++ = ',';
+  }
+  if (p) {
+    *p++ = ',';
+    if (has_feed) p = writeSmallMemo(p, feed, feed_);
+  }
+  if (!p) [[unlikely]]
+    return generalSegment(s);
+  *p++ = '\n';
+  rows_end_ = p;
+  if (p >= rows_flush_) [[unlikely]]
+    flushRows();
+}
+
+// ",G0" ... ",G3" (one store) or ",G33", ",G331", ...
+inline char* CsvWriter::writeMotion(char* p, Motion motion) {
   static_assert(static_cast<int>(Motion::G0) == 0 && static_cast<int>(Motion::G3) == 3);
   if (motion <= Motion::G3) [[likely]] {  // G0..G3: the digit is the enum's value, no call
-    const char field[4] = {',', 'G', static_cast<char>('0' + static_cast<int>(motion)), 0};
-    std::memcpy(p, field, 4);  // one store; the fourth byte is overwritten by the next field
-    p += 3;
-  } else {  // G33, G331, G63, ...
-    *p++ = ',';
-    for (const char* c = motionName(motion); *c; ++c) *p++ = *c;
+    // ",G0" and a fourth byte (overwritten by the next field) as one number, the digit added
+    // to it: one store (the bytes in memory order, as the row has them).
+    const char g0[4] = {',', 'G', '0', 0};
+    std::uint32_t field;
+    std::memcpy(&field, g0, 4);
+    field += static_cast<std::uint32_t>(motion) << (kDigitByte * 8);
+    std::memcpy(p, &field, 4);
+    return p + 3;
   }
+  *p++ = ',';  // G33, G331, G63, ...
+  for (const char* c = motionName(motion); *c; ++c) *p++ = *c;
+  return p;
+}
+
+// Any row (segment's general twin).
+void CsvWriter::generalSegment(const Segment& s) {
+  // Written in place at the end of the rows (room for one more: allocateRows).
+  char* p = writeLine(rows_end_, s.line);
+  // (The motion read once: a store through `p` may alias the segment, §40.)
+  const Motion motion = s.motion;
+  p = writeMotion(p, motion);
   // (Written out, not a loop over an initializer list: that copied the three values first.)
   p = writeField(p, s.end.x);
   p = writeField(p, s.end.y);

@@ -14,6 +14,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "core/inline_step.hpp"
+
 namespace ncoffset::out {
 
 // "00" "01" ... "99": decimal digits two at a time.
@@ -22,29 +24,33 @@ inline constexpr char kDigitPairs[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-// Writes v < 10000 in decimal and returns the end.
-inline char* writeBelow10000(char* out, unsigned v) {
-  if (v < 100) {
-    if (v < 10) {
-      *out = static_cast<char>('0' + v);
-      return out + 1;
+// The digits of 0..9999, four bytes each (the number's digits first, zeros after them), and
+// their count.
+struct FourDigits {
+  char text[10000][4] = {};
+  unsigned char len[10000] = {};
+  constexpr FourDigits() {
+    for (int v = 0; v < 10000; ++v) {
+      const int n = v < 10 ? 1 : v < 100 ? 2 : v < 1000 ? 3 : 4;
+      len[v] = static_cast<unsigned char>(n);
+      for (int i = n - 1, rest = v; i >= 0; --i, rest /= 10)
+        text[v][i] = static_cast<char>('0' + rest % 10);
+      for (int i = n; i < 4; ++i) text[v][i] = '0';
     }
-    std::memcpy(out, kDigitPairs + 2 * v, 2);
-    return out + 2;
   }
-  const unsigned hi = v / 100, lo = v % 100;
-  if (hi < 10) {
-    *out++ = static_cast<char>('0' + hi);
-  } else {
-    std::memcpy(out, kDigitPairs + 2 * hi, 2);
-    out += 2;
-  }
-  std::memcpy(out, kDigitPairs + 2 * lo, 2);
-  return out + 2;
+};
+inline constexpr FourDigits kFourDigits{};
+
+// Writes v < 10000 in decimal and returns the end: the four bytes of the table at once (room
+// for them at `out`; what lies past the digits is overwritten by what follows or cut off),
+// without a test of the number of digits or a division (docs/performance.md §43).
+inline char* writeBelow10000(char* out, unsigned v) {
+  std::memcpy(out, kFourDigits.text[v], 4);
+  return out + kFourDigits.len[v];
 }
 
-// Writes v in decimal and returns the end; below 1e8 (coordinates, line numbers, feeds) from
-// the pair table without a loop.
+// Writes v in decimal and returns the end (room for ten characters at `out`); below 1e8
+// (coordinates, line numbers, feeds) from the tables without a loop.
 inline char* writeUnsigned(char* out, unsigned v) {
   if (v < 10000) return writeBelow10000(out, v);
   if (v < 100000000) {
@@ -57,10 +63,24 @@ inline char* writeUnsigned(char* out, unsigned v) {
   return std::to_chars(out, out + 10, v).ptr;
 }
 
-// Writes v < 1000 as exactly three digits ("007") and returns the end.
+// 0..999 as exactly three digits ("007") and a fourth byte ('0'), four bytes each.
+struct ThreeDigits {
+  char text[1000][4] = {};
+  constexpr ThreeDigits() {
+    for (int v = 0; v < 1000; ++v) {
+      text[v][0] = static_cast<char>('0' + v / 100);
+      text[v][1] = static_cast<char>('0' + v / 10 % 10);
+      text[v][2] = static_cast<char>('0' + v % 10);
+      text[v][3] = '0';
+    }
+  }
+};
+inline constexpr ThreeDigits kThreeDigits{};
+
+// Writes v < 1000 as exactly three digits ("007") and returns the end; the table's four bytes
+// at once (room for them at `out`, as writeBelow10000).
 inline char* writeThreeDigits(char* out, unsigned v) {
-  *out = static_cast<char>('0' + v / 100);
-  std::memcpy(out + 1, kDigitPairs + 2 * (v % 100), 2);
+  std::memcpy(out, kThreeDigits.text[v], 4);
   return out + 3;
 }
 
@@ -97,7 +117,11 @@ inline int truncatedInt(double v) {
 // A whole number is the signed integer conversion of v itself (one instruction each way; -0
 // becomes 0, so it prints as 0): no absolute value, no test of the sign before it is known
 // to be needed (docs/performance.md §37).
-inline char* writeFixed(char* out, double v) {
+//
+// kSmall: only |v| < 10000 (else nullptr, possibly after a '-'), without a call (CsvWriter's
+// usual row, §43).
+template <bool kSmall = false>
+NCOFFSET_INLINE_STEP char* writeFixed(char* out, double v) {
   const int whole = truncatedInt(v);
   if (static_cast<double>(whole) == v) {
     auto u = static_cast<unsigned>(whole);
@@ -105,11 +129,12 @@ inline char* writeFixed(char* out, double v) {
       *out++ = '-';
       u = 0u - u;
     }
+    if constexpr (kSmall) return u < 10000 ? writeBelow10000(out, u) : nullptr;
     return writeUnsigned(out, u);
   }
   const double a = std::fabs(v);
-  if (!(a < 1e9)) return nullptr;  // also NaN
-  if (a < 1e-4) return nullptr;    // {fmt} writes these with an exponent
+  if (!(a < (kSmall ? 1e4 : 1e9))) return nullptr;  // also NaN
+  if (a < 1e-4) return nullptr;                     // {fmt} writes these with an exponent
   // Signed 64-bit conversions (one instruction each): m < 1e15 + 1.
   const auto m = static_cast<long long>(a * 1e6 + 0.5);
   if (static_cast<double>(m) / 1e6 != a) return nullptr;  // more than six decimals
@@ -117,7 +142,10 @@ inline char* writeFixed(char* out, double v) {
   const auto whole_part = static_cast<unsigned>(m / 1000000);
   // (Below 10000, the usual coordinate, the short writer: GCC inlines it, and kept the whole
   // writeUnsigned out of line here, §37.)
-  out = whole_part < 10000 ? writeBelow10000(out, whole_part) : writeUnsigned(out, whole_part);
+  if constexpr (kSmall)  // (a < 1e4 and m / 1e6 == a: whole_part < 10000)
+    out = writeBelow10000(out, whole_part);
+  else
+    out = whole_part < 10000 ? writeBelow10000(out, whole_part) : writeUnsigned(out, whole_part);
   const auto frac = static_cast<unsigned>(m % 1000000);  // not 0: v is no whole number
   // Two groups of three digits; at most three decimals (most CAM output) write only the first.
   // Trailing zeros are cut off by the table, without a loop over the digits.

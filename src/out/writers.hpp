@@ -77,9 +77,10 @@ class CsvWriter : public PathSink {
   struct Memo {
     double value = std::numeric_limits<double>::quiet_NaN();  // equal to no value
     size_t len = 0;
-    char text[32] = {};
+    char text[16] = {};  // (numbers of up to 16 characters; longer ones are not kept)
   };
   static char* writeMemo(char* p, double v, Memo& m);
+  static char* writeSmallMemo(char* p, double v, Memo& m);
   // The line number's text: the row before's while the line repeats, incremented in place
   // while the rows come from consecutive lines (docs/performance.md §37).
   struct LineMemo {
@@ -90,7 +91,10 @@ class CsvWriter : public PathSink {
     char text[16] = {};
   };
   char* writeLine(char* p, int line);
-  [[gnu::noinline]] static void carry(LineMemo& m);  // the next line after a 9
+  static char* writeMotion(char* p, Motion motion);
+  // segment()'s twin for every row (out of line: the usual row stays without a call).
+  [[gnu::noinline]] void generalSegment(const Segment& s);
+  static void increment(LineMemo& m);
   char* writeAxes(char* p) const;
   // The rows are written at rows_end_ in a buffer of their own (a pointer to move instead of the
   // memory buffer's size and capacity to test twice a row, docs/performance.md §40) and go to

@@ -202,6 +202,45 @@ TEST(CsvWriter, LineNumbersAsTheGeneralPath) {
   EXPECT_EQ(readAll(f.get()), expected);
 }
 
+// A random row after `s` for UsualRowsAsTheGeneralPath: numbers around the usual row's limits
+// (|v| < 10000, six decimals), -0 and NaN; z, the centre's z and the feed mostly repeated.
+Segment nextUsualRow(const Segment& s, std::mt19937_64& rng) {
+  static const double pool[] = {0.0,     -0.0,         1.0,          -4.0,      9999.0,
+                                -9999.0, 10000.0,      -10000.0,     9999.5,    49.25,
+                                1.23e-4, 9999.999999,  -9999.999999, 1.0000001, 2.7889999999999997,
+                                1e-5,    std::nan(""), 600.5};
+  auto any = [&rng] { return pool[rng() % std::size(pool)]; };
+  auto often = [&rng] { return rng() % 8 != 0; };
+  Segment r = s;
+  r.line = rng() % 100 == 0 ? static_cast<int>(rng() % 100000) : s.line + (often() ? 1 : 0);
+  r.motion = static_cast<Motion>(rng() % 5);  // G0..G3 and G33
+  r.end = {any(), any(), often() ? s.end.z : any()};
+  r.centre = {any(), any(), often() ? r.end.z : any()};
+  r.feed = often() ? s.feed : any();
+  r.has_feed = often();
+  return r;
+}
+
+// segment()'s usual row (no call, §43) against the general path, and its hand-over to
+// generalSegment in the middle of a row: consecutive lines (carries included), jumps of the
+// line, arcs and G33 (nextUsualRow).
+TEST(CsvWriter, UsualRowsAsTheGeneralPath) {
+  File f(std::tmpfile());
+  ASSERT_TRUE(f);
+  std::mt19937_64 rng(43);
+  std::string expected = kHeader + "\n";
+  {
+    CsvWriter w(f.get());
+    Segment s = line(1, Motion::G1, {0, 0, 0}, 100, true);
+    for (int i = 0; i < 200000; ++i) {
+      s = nextUsualRow(s, rng);
+      w.segment(s);
+      expected += generalRow(s);
+    }
+  }
+  EXPECT_EQ(readAll(f.get()), expected);
+}
+
 // The rows' own buffer (§40): the additional axes' columns join the header while no row was
 // written (none pending either), the header stays once a row is pending; rows and header in
 // order, nothing lost at the end without finish().
