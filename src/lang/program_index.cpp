@@ -9,6 +9,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/cpu_features.hpp"
 #include "lang/parser.hpp"
 #include "ncoffset/alarm.hpp"
 
@@ -133,7 +134,7 @@ struct Avx2 {
 // without SSE2 no line is skipped here (extend tests each one).
 TextPos skipUsualLines(std::string_view text, TextPos pos) {
 #if defined(NCOFFSET_AVX2)
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = core::cpuHasAvx2();
   if (avx2 && ProgramIndex::wide_scan) return skipUsualLinesAvx2(text, pos);
 #endif
 #if defined(__SSE2__)

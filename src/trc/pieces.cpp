@@ -9,6 +9,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/cpu_features.hpp"
 #include "core/inline_step.hpp"
 #include "trc/compensation_internal.hpp"
 #include "trc/radius_compensation.hpp"
@@ -95,8 +96,7 @@ template <std::size_t... I>
 }
 
 bool RadiusCompensation::wideCopyAvailable() {
-  __builtin_cpu_init();  // (called from a static initializer)
-  return __builtin_cpu_supports("avx");
+  return core::cpuHasAvx();  // (called from a static initializer)
 }
 #else
 void RadiusCompensation::copyBlockWide(MotionBlock& to, const MotionBlock& from) {
