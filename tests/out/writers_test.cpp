@@ -222,7 +222,7 @@ Segment nextUsualRow(const Segment& s, std::mt19937_64& rng) {
 }
 
 // segment()'s usual row (no call, §43) against the general path, and its hand-over to
-// generalSegment in the middle of a row: consecutive lines (carries included), jumps of the
+// generalRow in the middle of a row: consecutive lines (carries included), jumps of the
 // line, arcs and G33 (nextUsualRow).
 TEST(CsvWriter, UsualRowsAsTheGeneralPath) {
   File f(std::tmpfile());
