@@ -68,7 +68,8 @@ inline void CsvWriter::increment(LineMemo& m) {
 }
 
 // The 16 bytes of the text are copied at once (the row has room, as for writeMemo). A line
-// number is at most 11 characters ("-2147483648"); negative ones are written anew each time.
+// number is at most 11 characters ("-2147483648"); negative ones are written anew each time, and
+// every one while there are additional axes.
 inline char* CsvWriter::writeLine(char* p, int line) {
   LineMemo& m = line_;
   if (line == m.value + 1) [[likely]] {
@@ -77,7 +78,7 @@ inline char* CsvWriter::writeLine(char* p, int line) {
     char* const end = line >= 0 ? writeUnsigned(m.text, static_cast<unsigned>(line))
                                 : std::to_chars(m.text, m.text + 11, line).ptr;
     m.len = static_cast<size_t>(end - m.text);
-    m.value = line >= 0 ? line : LineMemo::kNone;
+    m.value = line >= 0 && axis_room_ == 0 ? line : LineMemo::kNone;  // (row's usual test)
   }
   const size_t len = m.len;  // (read before the copy: a store through `p` may alias it)
   std::memcpy(p, m.text, sizeof m.text);
@@ -140,7 +141,8 @@ void CsvWriter::row(int line, Motion motion, bool has_feed, double x, double y, 
   const bool arc = motion == Motion::G2 || motion == Motion::G3;
   LineMemo& l = line_;
   const bool next = line == l.value + 1;  // (l.len > 0 then)
-  const bool usual = axis_room_ == 0 && motion <= Motion::G3 && (line == l.value || next);
+  // (With additional axes the line's memo holds no line: never usual, without a test of them.)
+  const bool usual = motion <= Motion::G3 && (line == l.value || next);
   if (!usual) [[unlikely]]
     return generalRow(line, motion, has_feed, x, y, z, cx, cy, cz, feed);
   if (next) increment(l);
@@ -244,6 +246,7 @@ void CsvWriter::axisNames(const std::vector<std::string>& names) {
   if (rows_end_ != rows_.get()) return;  // rows of an init file: keep the header
   if (!extendCsvHeader(w_, axes_, names)) return;
   axis_room_ = 33 * names.size();
+  line_ = LineMemo{};  // (no line while there are axes: row() takes none as usual)
   allocateRows();
 }
 

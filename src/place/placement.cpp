@@ -213,28 +213,26 @@ NCOFFSET_INLINE_STEP void Placement::placeRow(const MotionBlock& m, Motion motio
   row_->row(line, motion, has_feed, end.x, end.y, end.z, centre.x, centre.y, centre.z, feed);
 }
 
-// The usual motion (MCS, no frame, no P - S) to a RowSink (toRows) as a row, inline; every other
-// one as a segment, out of line (segmentMotion): the row's path keeps no Segment on its stack.
+// The usual motion (MCS, no frame, no P - S) to a RowSink (toRows) as a row, else as a segment.
+// (Both inline: the segment's way out of line cost a plain sink 23 instructions a block in
+// BM_PlainG1, §49; element() keeps its segment out of line.)
 core::Feedback Placement::motion(const MotionBlock& m) {
-  if (!usualMotion(m) || !toRows(m)) [[unlikely]] {
-    segmentMotion(m);
-    return {};
-  }
-  // blockSegment's end and centre; the range check as in segmentMotion.
-  const Vec3& o = m.tool_offset;
-  const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
-  placeRow(m, m.motion, m.end + o, arc ? m.centre + o : Vec3{}, m.trc.mode != core::TrcMode::Off);
-  return {};
-}
-
-void Placement::segmentMotion(const MotionBlock& m) {
   // Blocks that radius compensation made or moved (corner circles, approach and retraction
   // lines) carry its settings; programmed positions were checked by the interpreter.
   const bool check = m.trc.mode != core::TrcMode::Off;
-  if (!usualMotion(m)) [[unlikely]]
-    return generalMotion(m, check);
+  if (!usualMotion(m)) [[unlikely]] {
+    generalMotion(m, check);
+    return {};
+  }
+  if (toRows(m)) [[likely]] {  // blockSegment's end and centre
+    const Vec3& o = m.tool_offset;
+    const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
+    placeRow(m, m.motion, m.end + o, arc ? m.centre + o : Vec3{}, check);
+    return {};
+  }
   Segment s = blockSegment(m);
   place(s, m, check);
+  return {};
 }
 
 void Placement::generalMotion(const MotionBlock& m, bool check) {
@@ -257,7 +255,10 @@ NCOFFSET_INLINE_STEP void Placement::rowElement(const MotionBlock& like, const g
 
 // As motion(): the usual element to a RowSink inline, every other one out of line.
 void Placement::element(const MotionBlock& like, const geom::Element& e, std::uint8_t tip_at) {
-  if (!usualElement(like, tip_at) || !toRows(like)) [[unlikely]]
+  // (toRows implies MCS, usualElement's coords_.)
+  const bool row = toRows(like) && like.plane == Plane::G17 && like.frame.isIdentity() &&
+                   tip_at == core::kTipNone;
+  if (!row) [[unlikely]]
     return segmentElement(like, e, tip_at);
   rowElement(like, e);
 }

@@ -32,8 +32,9 @@ class Placement final : public core::Stage {
   void beginRun(std::function<const std::string&(int)> file_name) {
     file_name_ = std::move(file_name);
     wants_programmed_ = sink_.wantsProgrammed();
-    // The row hand-over (core/row_sink.hpp): the run's target, if it is a RowSink.
-    row_ = dynamic_cast<core::RowSink*>(*target_);
+    // The row hand-over (core/row_sink.hpp): the run's target, if it is a RowSink, in MCS (the
+    // rows' only case: toRows implies it, no test of coords_ on their way).
+    row_ = coords_ == CoordSystem::MCS ? dynamic_cast<core::RowSink*>(*target_) : nullptr;
     row_target_ = row_ ? *target_ : nullptr;
   }
   // A motion of the (compensated) path.
@@ -104,9 +105,7 @@ class Placement final : public core::Stage {
   bool usualMotion(const core::MotionBlock& m) const {
     return coords_ == CoordSystem::MCS && m.frame.isIdentity() && m.tip_at == core::kTipNone;
   }
-  // motion() for a segment (not a row: toRows), out of line.
-  [[gnu::noinline]] void segmentMotion(const core::MotionBlock& m);
-  // segmentMotion's other cases (out of line).
+  // motion()'s other cases (out of line).
   [[gnu::noinline]] void generalMotion(const core::MotionBlock& m, bool check);
   // The segment's way out: joined to the path, range checked (`check`), to the sink.
   void place(Segment& s, const core::MotionBlock& m, bool check);
@@ -119,6 +118,7 @@ class Placement final : public core::Stage {
   // Whether the segment of `m` goes to row_ (core/row_sink.hpp): the run's target is a RowSink,
   // the segment goes to it directly (nothing waits in the sink switch) and needs no rejoin
   // (which would change its start, which a row does not have).
+  // (Only in MCS: beginRun.)
   bool toRows(const core::MotionBlock& m) const {
     return *target_ == row_target_ && !*waiting_ && joined(m, path_);
   }

@@ -252,8 +252,11 @@ TEST(CsvWriter, AxisColumnsOnlyBeforeTheFirstRow) {
     w.axisNames({"A"});
     w.axes({1, 0, {90}});
     w.segment(line(1, Motion::G1, {1, 2, 3}, 100, true));
+    w.segment(line(2, Motion::G1, {1, 2, 4}, 100, true));  // (consecutive, repeated: §49)
+    w.segment(line(2, Motion::G0, {1, 2, 4}));
   }
-  EXPECT_EQ(readAll(f.get()), kHeader + ",a\n1,G1,1,2,3,,,,100,90\n");
+  EXPECT_EQ(readAll(f.get()),
+            kHeader + ",a\n1,G1,1,2,3,,,,100,90\n2,G1,1,2,4,,,,100,90\n2,G0,1,2,4,,,,,90\n");
   {
     CsvWriter w(g.get());
     w.segment(line(1, Motion::G0, {1, 2, 3}));
