@@ -68,7 +68,8 @@ inline void CsvWriter::increment(LineMemo& m) {
 }
 
 // The 16 bytes of the text are copied at once (the row has room, as for writeMemo). A line
-// number is at most 11 characters ("-2147483648"); negative ones are written anew each time.
+// number is at most 11 characters ("-2147483648"); negative ones are written anew each time, and
+// every one while there are additional axes.
 inline char* CsvWriter::writeLine(char* p, int line) {
   LineMemo& m = line_;
   if (line == m.value + 1) [[likely]] {
@@ -77,7 +78,7 @@ inline char* CsvWriter::writeLine(char* p, int line) {
     char* const end = line >= 0 ? writeUnsigned(m.text, static_cast<unsigned>(line))
                                 : std::to_chars(m.text, m.text + 11, line).ptr;
     m.len = static_cast<size_t>(end - m.text);
-    m.value = line >= 0 ? line : LineMemo::kNone;
+    m.value = line >= 0 && axis_room_ == 0 ? line : LineMemo::kNone;  // (row's usual test)
   }
   const size_t len = m.len;  // (read before the copy: a store through `p` may alias it)
   std::memcpy(p, m.text, sizeof m.text);
@@ -127,22 +128,23 @@ NCOFFSET_INLINE_STEP char* CsvWriter::writeSmallMemo(char* p, double v, Memo& m)
 }
 
 void CsvWriter::segment(const Segment& s) {
+  row(s.line, s.motion, s.has_feed, s.end.x, s.end.y, s.end.z, s.centre.x, s.centre.y, s.centre.z,
+      s.feed);
+}
+
+void CsvWriter::row(int line, Motion motion, bool has_feed, double x, double y, double z, double cx,
+                    double cy, double cz, double feed) {
   // The usual row: the line of the row before or the next one, G0..G3, z, an arc
   // centre's z and the feed as in the memos, no additional axes, numbers below 10000 with at
   // most six decimals. Written without a call (so without registers to save: 17 instructions a
-  // row, docs/performance.md §43); any other row by generalSegment from the row's start.
-  const Motion motion = s.motion;
+  // row, docs/performance.md §43); any other row by generalRow from the row's start.
   const bool arc = motion == Motion::G2 || motion == Motion::G3;
-  const bool has_feed = s.has_feed;
-  const long long line = s.line;
   LineMemo& l = line_;
   const bool next = line == l.value + 1;  // (l.len > 0 then)
-  const bool usual = axis_room_ == 0 && motion <= Motion::G3 && (line == l.value || next);
+  // (With additional axes the line's memo holds no line: never usual, without a test of them.)
+  const bool usual = motion <= Motion::G3 && (line == l.value || next);
   if (!usual) [[unlikely]]
-    return generalSegment(s);
-  // (Values read before the stores through `p`, which may alias the segment and the memos.)
-  const double x = s.end.x, y = s.end.y, z = s.end.z;
-  const double cx = s.centre.x, cy = s.centre.y, cz = s.centre.z, feed = s.feed;
+    return generalRow(line, motion, has_feed, x, y, z, cx, cy, cz, feed);
   if (next) increment(l);
   char* p = rows_end_;
   std::memcpy(p, l.text, sizeof l.text);
@@ -151,7 +153,7 @@ void CsvWriter::segment(const Segment& s) {
   p = writeSmallField(p, x);
   if (p) p = writeSmallField(p, y);
   if (!p) [[unlikely]]  // (the line's memo holds this line now: written again as it is)
-    return generalSegment(s);
+    return generalRow(line, motion, has_feed, x, y, z, cx, cy, cz, feed);
   *p++ = ',';
   p = writeSmallMemo(p, z, z_);
   if (arc && p) {
@@ -171,7 +173,7 @@ void CsvWriter::segment(const Segment& s) {
     if (has_feed) p = writeSmallMemo(p, feed, feed_);
   }
   if (!p) [[unlikely]]
-    return generalSegment(s);
+    return generalRow(line, motion, has_feed, x, y, z, cx, cy, cz, feed);
   *p++ = '\n';
   rows_end_ = p;
   if (p >= rows_flush_) [[unlikely]]
@@ -196,30 +198,28 @@ inline char* CsvWriter::writeMotion(char* p, Motion motion) {
   return p;
 }
 
-// Any row (segment's general twin).
-void CsvWriter::generalSegment(const Segment& s) {
+// Any row (row's general twin).
+void CsvWriter::generalRow(int line, Motion motion, bool has_feed, double x, double y, double z,
+                           double cx, double cy, double cz, double feed) {
   // Written in place at the end of the rows (room for one more: allocateRows).
-  char* p = writeLine(rows_end_, s.line);
-  // (The motion read once: a store through `p` may alias the segment, §40.)
-  const Motion motion = s.motion;
+  char* p = writeLine(rows_end_, line);
   p = writeMotion(p, motion);
-  // (Written out, not a loop over an initializer list: that copied the three values first.)
-  p = writeField(p, s.end.x);
-  p = writeField(p, s.end.y);
+  p = writeField(p, x);
+  p = writeField(p, y);
   *p++ = ',';
-  p = writeMemo(p, s.end.z, z_);  // z mostly as in the row before
+  p = writeMemo(p, z, z_);  // z mostly as in the row before
   if (motion == Motion::G2 || motion == Motion::G3) {
-    p = writeField(p, s.centre.x);
-    p = writeField(p, s.centre.y);
+    p = writeField(p, cx);
+    p = writeField(p, cy);
     *p++ = ',';
-    p = writeMemo(p, s.centre.z, z_);  // in the plane: mostly z
+    p = writeMemo(p, cz, z_);  // in the plane: mostly z
   } else {
     *p++ = ',';
     *p++ = ',';
     *p++ = ',';
   }
   *p++ = ',';
-  if (s.has_feed) p = writeMemo(p, s.feed, feed_);  // shortest round trip, as {fmt}'s "{}"
+  if (has_feed) p = writeMemo(p, feed, feed_);  // shortest round trip, as {fmt}'s "{}"
   if (axis_room_) [[unlikely]]
     p = writeAxes(p);
   *p++ = '\n';
@@ -246,6 +246,7 @@ void CsvWriter::axisNames(const std::vector<std::string>& names) {
   if (rows_end_ != rows_.get()) return;  // rows of an init file: keep the header
   if (!extendCsvHeader(w_, axes_, names)) return;
   axis_room_ = 33 * names.size();
+  line_ = LineMemo{};  // (no line while there are axes: row() takes none as usual)
   allocateRows();
 }
 

@@ -63,6 +63,27 @@ inline char* writeUnsigned(char* out, unsigned v) {
   return std::to_chars(out, out + 10, v).ptr;
 }
 
+// The text of -9999..9999 at [v + 9999]: the sign and the digits, then zeros, and the length in
+// the eighth byte; eight bytes each (a whole number's text for writeFixed<true> in one load, no
+// test of the sign, docs/performance.md §49).
+struct SignedFourDigits {
+  char text[19999][8] = {};
+  constexpr SignedFourDigits() {
+    for (int v = -9999; v <= 9999; ++v) {
+      char* t = text[v + 9999];
+      const int a = v < 0 ? -v : v;
+      const int n = a < 10 ? 1 : a < 100 ? 2 : a < 1000 ? 3 : 4;
+      const int sign = v < 0 ? 1 : 0;
+      if (sign) t[0] = '-';
+      for (int i = sign + n - 1, rest = a; i >= sign; --i, rest /= 10)
+        t[i] = static_cast<char>('0' + rest % 10);
+      for (int i = sign + n; i < 7; ++i) t[i] = '0';
+      t[7] = static_cast<char>(sign + n);
+    }
+  }
+};
+inline constexpr SignedFourDigits kSignedFourDigits{};
+
 // 0..999 as exactly three digits ("007") and a fourth byte ('0'), four bytes each.
 struct ThreeDigits {
   char text[1000][4] = {};
@@ -118,18 +139,23 @@ inline int truncatedInt(double v) {
 // becomes 0, so it prints as 0): no absolute value, no test of the sign before it is known
 // to be needed (docs/performance.md §37).
 //
-// kSmall: only |v| < 10000 (else nullptr, possibly after a '-'), without a call (CsvWriter's
-// usual row, §43).
+// kSmall: only |v| < 10000 (else nullptr, possibly after a '-'; room for eight bytes at `out`),
+// without a call (CsvWriter's usual row, §43).
 template <bool kSmall = false>
 NCOFFSET_INLINE_STEP char* writeFixed(char* out, double v) {
   const int whole = truncatedInt(v);
   if (static_cast<double>(whole) == v) {
+    if constexpr (kSmall) {  // -9999..9999 from the signed table (eight bytes of room at out)
+      const unsigned i = static_cast<unsigned>(whole) + 9999u;  // (wraps: -9999 is 0)
+      if (i >= 19999) return nullptr;
+      std::memcpy(out, kSignedFourDigits.text[i], 8);
+      return out + kSignedFourDigits.text[i][7];
+    }
     auto u = static_cast<unsigned>(whole);
     if (whole < 0) {
       *out++ = '-';
       u = 0u - u;
     }
-    if constexpr (kSmall) return u < 10000 ? writeBelow10000(out, u) : nullptr;
     return writeUnsigned(out, u);
   }
   const double a = std::fabs(v);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "core/row_sink.hpp"
 #include "ncoffset/path.hpp"
 #include "out/axis_columns.hpp"
 
@@ -59,13 +60,16 @@ class BufferedWriter {
 
 // Numbers as the shortest text that reads back as the same double. (The writers are not final:
 // the CLI extends them with printing MSG texts, tools/ncoffset/message_sinks.hpp.)
-class CsvWriter : public PathSink {
+class CsvWriter : public core::RowSink, public PathSink {
  public:
   explicit CsvWriter(std::FILE* f);
   ~CsvWriter() override { flushRows(true); }
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
-  void segment(const Segment& s) override;
+  // (final: row() writes what segment() writes, core/row_sink.hpp.)
+  void segment(const Segment& s) final;
+  void row(int line, Motion motion, bool has_feed, double x, double y, double z, double cx,
+           double cy, double cz, double feed) final;
   void finish(const Alarm* alarm) override;
   // The additional axes: columns after feed (docs/output-formats.md).
   void axisNames(const std::vector<std::string>& names) override;
@@ -92,8 +96,9 @@ class CsvWriter : public PathSink {
   };
   char* writeLine(char* p, int line);
   static char* writeMotion(char* p, Motion motion);
-  // segment()'s twin for every row (out of line: the usual row stays without a call).
-  [[gnu::noinline]] void generalSegment(const Segment& s);
+  // row()'s twin for every row (out of line: the usual row stays without a call).
+  [[gnu::noinline]] void generalRow(int line, Motion motion, bool has_feed, double x, double y,
+                                    double z, double cx, double cy, double cz, double feed);
   static void increment(LineMemo& m);
   char* writeAxes(char* p) const;
   // The rows are written at rows_end_ in a buffer of their own (a pointer to move instead of the

@@ -145,6 +145,29 @@ NCOFFSET_INLINE_STEP void checkRange(const Segment& s, int line) {
   outOfRange(s, line);
 }
 
+// inRange of the end and, for an arc, the centre, a row's way: first whether the sum of their
+// squares is below 1e18, which holds only if every coordinate is within 1e9 (a coordinate beyond
+// it, infinite or NaN has a square, rounded, of at least 1e18 or NaN, and adding squares rounds
+// upwards from it or stays NaN); a few multiplications instead of the tests of each coordinate
+// (docs/performance.md §49). Else the tests of each, as inRange.
+NCOFFSET_INLINE_STEP bool rowInRange(const Vec3& end, const Vec3& centre, bool arc) {
+  double squares = end.x * end.x + end.y * end.y + end.z * end.z;
+  if (arc) squares += centre.x * centre.x + centre.y * centre.y + centre.z * centre.z;
+  if (squares < 1e18) [[likely]]
+    return true;
+  return inRange(end) && (!arc || inRange(centre));
+}
+
+// outOfRange of a row (Placement::placeRow): its segment built for the alarm's text.
+[[noreturn, gnu::cold, gnu::noinline]] void rowOutOfRange(Motion motion, const Vec3& end,
+                                                          const Vec3& centre, int line) {
+  Segment s;
+  s.motion = motion;
+  s.end = end;
+  s.centre = centre;
+  outOfRange(s, line);
+}
+
 }  // namespace
 
 void Placement::rejoin(Segment& s, const MotionBlock& m, Joint& j) const {
@@ -175,14 +198,36 @@ NCOFFSET_INLINE_STEP void Placement::place(Segment& s, const MotionBlock& m, boo
   emit(s);
 }
 
+// place() for a row: the same join (none needed: toRows), range check and sequence number.
+NCOFFSET_INLINE_STEP void Placement::placeRow(const MotionBlock& m, Motion motion, const Vec3& end,
+                                              const Vec3& centre, bool check) {
+  const int line = m.line;  // (read before the stores, which may alias the block)
+  const long long seq = m.seq;
+  const bool has_feed = m.has_feed;
+  const double feed = m.feed;
+  path_.at = end;
+  const bool arc = motion == Motion::G2 || motion == Motion::G3;
+  if (check && !rowInRange(end, centre, arc)) [[unlikely]]
+    rowOutOfRange(motion, end, centre, line);
+  seq_ = seq;
+  row_->row(line, motion, has_feed, end.x, end.y, end.z, centre.x, centre.y, centre.z, feed);
+}
+
+// The usual motion (MCS, no frame, no P - S) to a RowSink (toRows) as a row, else as a segment.
+// (Both inline: the segment's way out of line cost a plain sink 23 instructions a block in
+// BM_PlainG1, §49; element() keeps its segment out of line.)
 core::Feedback Placement::motion(const MotionBlock& m) {
   // Blocks that radius compensation made or moved (corner circles, approach and retraction
   // lines) carry its settings; programmed positions were checked by the interpreter.
   const bool check = m.trc.mode != core::TrcMode::Off;
-  const bool usual =
-      coords_ == CoordSystem::MCS && m.frame.isIdentity() && m.tip_at == core::kTipNone;
-  if (!usual) [[unlikely]] {
+  if (!usualMotion(m)) [[unlikely]] {
     generalMotion(m, check);
+    return {};
+  }
+  if (toRows(m)) [[likely]] {  // blockSegment's end and centre
+    const Vec3& o = m.tool_offset;
+    const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
+    placeRow(m, m.motion, m.end + o, arc ? m.centre + o : Vec3{}, check);
     return {};
   }
   Segment s = blockSegment(m);
@@ -195,10 +240,32 @@ void Placement::generalMotion(const MotionBlock& m, bool check) {
   place(s, m, check);
 }
 
+// planeSegment's end, centre and motion, as a row.
+NCOFFSET_INLINE_STEP void Placement::rowElement(const MotionBlock& like, const geom::Element& e) {
+  const Vec3& o = like.tool_offset;
+  const Vec3 end{e.p1.a + o.x, e.p1.o + o.y, like.end.z + o.z};
+  if (e.arc) {
+    const Vec3 centre{e.c.a + o.x, e.c.o + o.y, like.start.z + o.z};
+    return placeRow(like, e.ccw ? Motion::G3 : Motion::G2, end, centre, true);
+  }
+  const Motion line =
+      like.motion == Motion::G2 || like.motion == Motion::G3 ? Motion::G1 : like.motion;
+  placeRow(like, line, end, Vec3{}, true);
+}
+
+// As motion(): the usual element to a RowSink inline, every other one out of line.
 void Placement::element(const MotionBlock& like, const geom::Element& e, std::uint8_t tip_at) {
-  const bool usual = like.plane == Plane::G17 && coords_ == CoordSystem::MCS &&
-                     like.frame.isIdentity() && tip_at == core::kTipNone;
-  if (!usual) [[unlikely]]
+  // (toRows implies MCS, usualElement's coords_.)
+  const bool row = toRows(like) && like.plane == Plane::G17 && like.frame.isIdentity() &&
+                   tip_at == core::kTipNone;
+  if (!row) [[unlikely]]
+    return segmentElement(like, e, tip_at);
+  rowElement(like, e);
+}
+
+void Placement::segmentElement(const MotionBlock& like, const geom::Element& e,
+                               std::uint8_t tip_at) {
+  if (!usualElement(like, tip_at)) [[unlikely]]
     return generalElement(like, e, tip_at);
   Segment s = planeSegment(like, e);
   place(s, like, true);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/row_sink.hpp"
 #include "core/stage.hpp"
 #include "ncoffset/channel.hpp"
 #include "ncoffset/path.hpp"
@@ -31,6 +32,10 @@ class Placement final : public core::Stage {
   void beginRun(std::function<const std::string&(int)> file_name) {
     file_name_ = std::move(file_name);
     wants_programmed_ = sink_.wantsProgrammed();
+    // The row hand-over (core/row_sink.hpp): the run's target, if it is a RowSink, in MCS (the
+    // rows' only case: toRows implies it, no test of coords_ on their way).
+    row_ = coords_ == CoordSystem::MCS ? dynamic_cast<core::RowSink*>(*target_) : nullptr;
+    row_target_ = row_ ? *target_ : nullptr;
   }
   // A motion of the (compensated) path.
   core::Feedback motion(const core::MotionBlock& m) override;
@@ -64,11 +69,14 @@ class Placement final : public core::Stage {
   // A segment placed with another frame or tool offset than the one before starts where that one
   // ended: the carrier does not jump at a tool or frame change (docs/tool-offsets.md section 5).
   void join(Segment& s, const core::MotionBlock& m, Joint& j) const {
-    const bool same = m.frame.state() == j.frame.state() && m.tool_offset.x == j.offset.x &&
-                      m.tool_offset.y == j.offset.y && m.tool_offset.z == j.offset.z;
-    if (!same) [[unlikely]]
+    if (!joined(m, j)) [[unlikely]]
       rejoin(s, m, j);
     j.at = s.end;
+  }
+  // Whether `m` has the frame and tool offset the segment before was placed with (no rejoin).
+  static bool joined(const core::MotionBlock& m, const Joint& j) {
+    return m.frame.state() == j.frame.state() && m.tool_offset.x == j.offset.x &&
+           m.tool_offset.y == j.offset.y && m.tool_offset.z == j.offset.z;
   }
   void rejoin(Segment& s, const core::MotionBlock& m, Joint& j) const;
   void programmedSegment(const core::MotionBlock& m);
@@ -78,11 +86,25 @@ class Placement final : public core::Stage {
   // element()'s usual case (G17, MCS, no frame, no turning tool's P - S): the segment straight
   // from the element, without its geometry as a block (docs/performance.md §37).
   Segment planeSegment(const core::MotionBlock& like, const geom::Element& e) const;
-  // element()'s other cases (out of line: the usual one stays short).
+  // The same as a row (toRows).
+  void rowElement(const core::MotionBlock& like, const geom::Element& e);
+  // element()'s usual case: G17 in MCS, no frame, no turning tool's P - S.
+  bool usualElement(const core::MotionBlock& like, std::uint8_t tip_at) const {
+    return like.plane == Plane::G17 && coords_ == CoordSystem::MCS && like.frame.isIdentity() &&
+           tip_at == core::kTipNone;
+  }
+  // element() for a segment (not a row: toRows), out of line (element's row stays short).
+  [[gnu::noinline]] void segmentElement(const core::MotionBlock& like, const geom::Element& e,
+                                        std::uint8_t tip_at);
+  // segmentElement's other cases (out of line: the usual one stays short).
   [[gnu::noinline]] void generalElement(const core::MotionBlock& like, const geom::Element& e,
                                         std::uint8_t tip_at);
   // motion()'s usual case (MCS, no frame, no P - S): the segment straight from the block.
   Segment blockSegment(const core::MotionBlock& m) const;
+  // motion()'s usual case: MCS, no frame, no P - S.
+  bool usualMotion(const core::MotionBlock& m) const {
+    return coords_ == CoordSystem::MCS && m.frame.isIdentity() && m.tip_at == core::kTipNone;
+  }
   // motion()'s other cases (out of line).
   [[gnu::noinline]] void generalMotion(const core::MotionBlock& m, bool check);
   // The segment's way out: joined to the path, range checked (`check`), to the sink.
@@ -92,6 +114,18 @@ class Placement final : public core::Stage {
                     Vec3& centre, Vec3& normal, Motion& motion) const;
   // P - S at the points of `s` (of a motion `motion`) on the path of S (core::TipAt `tip_at`).
   void addTip(Segment& s, const core::MotionBlock& m, std::uint8_t tip_at, Motion motion) const;
+
+  // Whether the segment of `m` goes to row_ (core/row_sink.hpp): the run's target is a RowSink,
+  // the segment goes to it directly (nothing waits in the sink switch) and needs no rejoin
+  // (which would change its start, which a row does not have).
+  // (Only in MCS: beginRun.)
+  bool toRows(const core::MotionBlock& m) const {
+    return *target_ == row_target_ && !*waiting_ && joined(m, path_);
+  }
+  // place() for toRows' segments: the end and centre (arcs; else any value) of a segment of
+  // motion `motion` in block `m`, joined, range checked (`check`), as a row to row_.
+  void placeRow(const core::MotionBlock& m, Motion motion, const Vec3& end, const Vec3& centre,
+                bool check);
 
   void emit(const Segment& s) {
     if (!*waiting_) [[likely]]
@@ -105,6 +139,9 @@ class Placement final : public core::Stage {
   static constexpr bool kNeverWaiting = false;
   PathSink* const* target_ = &own_sink_;
   const bool* waiting_ = &kNeverWaiting;
+  // The row hand-over: the target found at beginRun (nullptr: none) and its RowSink.
+  const PathSink* row_target_ = nullptr;
+  core::RowSink* row_ = nullptr;
   CoordSystem coords_;
   bool wants_programmed_ = false;
   long long seq_ = 0;

@@ -123,6 +123,43 @@ TEST(ShortestNumber, EveryWholeNumberAsFmt) {
     EXPECT_EQ(viaInline(v), viaFmt(v)) << v;
 }
 
+// writeFixed<true> (CsvWriter's usual row): where it writes a text, {fmt}'s; it writes one for
+// every whole number within ±9999 (the signed table, §49) and every decimal of at most six
+// places from 1e-4 to below 10000, and none from 10000 on. Every whole number within ±100000 and
+// its neighbours, 300,000 random decimals, and the limits.
+TEST(ShortestNumber, SmallFixedAsFmt) {
+  const auto check = [](double v, bool written) {
+    char text[32];
+    const char* end = writeFixed<true>(text, v);
+    if (end) {
+      ASSERT_EQ(std::string(static_cast<const char*>(text), end), viaFmt(v)) << v;
+    }
+    ASSERT_EQ(end != nullptr, written) << v;
+  };
+  for (int i = -100000; i <= 100000; ++i) {
+    check(i, i >= -9999 && i <= 9999);
+    check(std::nextafter(static_cast<double>(i), 1e300), false);
+    check(std::nextafter(static_cast<double>(i), -1e300), false);
+  }
+  std::mt19937_64 rng(49);
+  std::uniform_int_distribution<int> places(0, 6);
+  const double scale[] = {1, 10, 100, 1000, 10000, 100000, 1000000};
+  for (int i = 0; i < 300000; ++i) {
+    const int k = places(rng);
+    const auto limit = static_cast<long long>(1e4 * scale[k]) - 1;
+    const double v =
+        static_cast<double>(std::uniform_int_distribution<long long>(-limit, limit)(rng)) /
+        scale[k];
+    check(v, v == 0 || std::fabs(v) >= 1e-4);
+  }
+  for (double v : {-0.0, 0.0, 9999.0, -9999.0, 9999.999999, -9999.999999, 1e-4, 2.5})
+    check(v, true);
+  for (double v : {10000.0, -10000.0, 2147483647.0, -2147483648.0, 1e-5, 2.7889999999999997,
+                   std::numeric_limits<double>::infinity(),
+                   -std::numeric_limits<double>::infinity(), std::nan("")})
+    check(v, false);
+}
+
 std::string viaSlow(double v) {
   char text[32];
   return std::string(text, writeShortestSlow(text, v));

@@ -222,7 +222,7 @@ Segment nextUsualRow(const Segment& s, std::mt19937_64& rng) {
 }
 
 // segment()'s usual row (no call, §43) against the general path, and its hand-over to
-// generalSegment in the middle of a row: consecutive lines (carries included), jumps of the
+// generalRow in the middle of a row: consecutive lines (carries included), jumps of the
 // line, arcs and G33 (nextUsualRow).
 TEST(CsvWriter, UsualRowsAsTheGeneralPath) {
   File f(std::tmpfile());
@@ -252,8 +252,11 @@ TEST(CsvWriter, AxisColumnsOnlyBeforeTheFirstRow) {
     w.axisNames({"A"});
     w.axes({1, 0, {90}});
     w.segment(line(1, Motion::G1, {1, 2, 3}, 100, true));
+    w.segment(line(2, Motion::G1, {1, 2, 4}, 100, true));  // (consecutive, repeated: §49)
+    w.segment(line(2, Motion::G0, {1, 2, 4}));
   }
-  EXPECT_EQ(readAll(f.get()), kHeader + ",a\n1,G1,1,2,3,,,,100,90\n");
+  EXPECT_EQ(readAll(f.get()),
+            kHeader + ",a\n1,G1,1,2,3,,,,100,90\n2,G1,1,2,4,,,,100,90\n2,G0,1,2,4,,,,,90\n");
   {
     CsvWriter w(g.get());
     w.segment(line(1, Motion::G0, {1, 2, 3}));
