@@ -106,25 +106,54 @@ void CsvWriter::flushRows(bool sync) {
   rows_end_ = rows_.get();
 }
 
-// ",v" at p for |v| < 10000 with at most six decimals, else nullptr (no call).
-NCOFFSET_INLINE_STEP char* writeSmallField(char* p, double v) {
+// "," at p (an empty field); returns the end.
+inline char* writeEmpty(char* p) {
   *p = ',';
-  return writeFixed<true>(p + 1, v);
+  return p + 1;
 }
 
-// writeMemo for segment()'s usual row: a new value by writeFixed<true> (at most 12 characters,
-// "-9999.999999"), else nullptr.
+// ",v" at p for |v| < 10000 with at most six decimals, else nullptr (no call; a whole number's
+// comma from the table, §51).
+NCOFFSET_INLINE_STEP char* writeSmallField(char* p, double v) {
+  return writeFixed<true, true>(p, v);
+}
+
+// writeMemo of a field (",v") for row()'s usual row: a new value by writeSmallField (at most 13
+// characters, ",-9999.999999"), else nullptr. (Its own memos: generalRow's hold no comma.)
 NCOFFSET_INLINE_STEP char* CsvWriter::writeSmallMemo(char* p, double v, Memo& m) {
   if (v == m.value) {
     std::memcpy(p, m.text, sizeof m.text);
     return p + m.len;
   }
-  char* const end = writeFixed<true>(p, v);
+  char* const end = writeSmallField(p, v);
   if (!end) return nullptr;
   m.len = static_cast<size_t>(end - p);
   m.value = v;
   std::memcpy(m.text, p, sizeof m.text);
   return end;
+}
+
+// The usual row's end after y for a line (not an arc): ",z,,,,feed\n", the row before's while
+// z, the feed and whether there is one are as then (two moves, §51), else written and kept
+// (at most 30 characters: 13 + 3 + 13 + 1). nullptr: z or the feed is no small number.
+NCOFFSET_INLINE_STEP char* CsvWriter::writeLineTail(char* p, double z, bool has_feed, double feed) {
+  TailMemo& t = tail_;
+  if (z == t.z && feed == t.feed && has_feed == t.has_feed) {
+    std::memcpy(p, t.text, sizeof t.text);
+    return p + t.len;
+  }
+  char* e = writeSmallMemo(p, z, zf_);
+  if (!e) return nullptr;
+  std::memcpy(e, ",,,,", 4);  // the centre's three empty fields, and the feed's comma
+  e = has_feed ? writeSmallMemo(e + 3, feed, feedf_) : e + 4;
+  if (!e) return nullptr;
+  *e++ = '\n';
+  t.len = static_cast<size_t>(e - p);
+  t.z = z;
+  t.feed = feed;
+  t.has_feed = has_feed;
+  std::memcpy(t.text, p, sizeof t.text);
+  return e;
 }
 
 void CsvWriter::segment(const Segment& s) {
@@ -142,10 +171,11 @@ void CsvWriter::row(int line, Motion motion, bool has_feed, double x, double y, 
   LineMemo& l = line_;
   const bool next = line == l.value + 1;  // (l.len > 0 then)
   // (With additional axes the line's memo holds no line: never usual, without a test of them.)
-  const bool usual = motion <= Motion::G3 && (line == l.value || next);
+  const bool usual = motion <= Motion::G3 && (next || line == l.value);
   if (!usual) [[unlikely]]
     return generalRow(line, motion, has_feed, x, y, z, cx, cy, cz, feed);
-  if (next) increment(l);
+  if (next) [[likely]]
+    increment(l);
   char* p = rows_end_;
   std::memcpy(p, l.text, sizeof l.text);
   p += l.len;
@@ -154,27 +184,18 @@ void CsvWriter::row(int line, Motion motion, bool has_feed, double x, double y, 
   if (p) p = writeSmallField(p, y);
   if (!p) [[unlikely]]  // (the line's memo holds this line now: written again as it is)
     return generalRow(line, motion, has_feed, x, y, z, cx, cy, cz, feed);
-  *p++ = ',';
-  p = writeSmallMemo(p, z, z_);
-  if (arc && p) {
-    p = writeSmallField(p, cx);
+  if (!arc) {
+    p = writeLineTail(p, z, has_feed, feed);
+  } else {
+    p = writeSmallMemo(p, z, zf_);
+    if (p) p = writeSmallField(p, cx);
     if (p) p = writeSmallField(p, cy);
-    if (p) {
-      *p++ = ',';
-      p = writeSmallMemo(p, cz, z_);  // in the plane: mostly z
-    }
-  } else if (p) {
-    *p++ = ',';
-    *p++ = ',';
-    *p++ = ',';
-  }
-  if (p) {
-    *p++ = ',';
-    if (has_feed) p = writeSmallMemo(p, feed, feed_);
+    if (p) p = writeSmallMemo(p, cz, zf_);  // in the plane: mostly z
+    if (p) p = has_feed ? writeSmallMemo(p, feed, feedf_) : writeEmpty(p);
+    if (p) *p++ = '\n';
   }
   if (!p) [[unlikely]]
     return generalRow(line, motion, has_feed, x, y, z, cx, cy, cz, feed);
-  *p++ = '\n';
   rows_end_ = p;
   if (p >= rows_flush_) [[unlikely]]
     flushRows();

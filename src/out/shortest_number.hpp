@@ -65,16 +65,19 @@ inline char* writeUnsigned(char* out, unsigned v) {
 
 // The text of -9999..9999 at [v + 9999]: the sign and the digits, then zeros, and the length in
 // the eighth byte; eight bytes each (a whole number's text for writeFixed<true> in one load, no
-// test of the sign, docs/performance.md §49).
+// test of the sign, docs/performance.md §49). `field`: a comma before the sign (",-12", a CSV
+// field in the same load, writeFixed<true, true>, §51).
 struct SignedFourDigits {
   char text[19999][8] = {};
-  constexpr SignedFourDigits() {
+  constexpr explicit SignedFourDigits(bool field) {
     for (int v = -9999; v <= 9999; ++v) {
       char* t = text[v + 9999];
       const int a = v < 0 ? -v : v;
       const int n = a < 10 ? 1 : a < 100 ? 2 : a < 1000 ? 3 : 4;
-      const int sign = v < 0 ? 1 : 0;
-      if (sign) t[0] = '-';
+      const int comma = field ? 1 : 0;
+      const int sign = comma + (v < 0 ? 1 : 0);
+      if (field) t[0] = ',';
+      if (v < 0) t[comma] = '-';
       for (int i = sign + n - 1, rest = a; i >= sign; --i, rest /= 10)
         t[i] = static_cast<char>('0' + rest % 10);
       for (int i = sign + n; i < 7; ++i) t[i] = '0';
@@ -82,7 +85,8 @@ struct SignedFourDigits {
     }
   }
 };
-inline constexpr SignedFourDigits kSignedFourDigits{};
+inline constexpr SignedFourDigits kSignedFourDigits{false};
+inline constexpr SignedFourDigits kSignedFields{true};
 
 // 0..999 as exactly three digits ("007") and a fourth byte ('0'), four bytes each.
 struct ThreeDigits {
@@ -140,16 +144,18 @@ inline int truncatedInt(double v) {
 // to be needed (docs/performance.md §37).
 //
 // kSmall: only |v| < 10000 (else nullptr, possibly after a '-'; room for eight bytes at `out`),
-// without a call (CsvWriter's usual row, §43).
-template <bool kSmall = false>
+// without a call (CsvWriter's usual row, §43). kField (with kSmall): a comma before the number
+// (the whole number's comma in the table's load, §51).
+template <bool kSmall = false, bool kField = false>
 NCOFFSET_INLINE_STEP char* writeFixed(char* out, double v) {
   const int whole = truncatedInt(v);
   if (static_cast<double>(whole) == v) {
     if constexpr (kSmall) {  // -9999..9999 from the signed table (eight bytes of room at out)
       const unsigned i = static_cast<unsigned>(whole) + 9999u;  // (wraps: -9999 is 0)
       if (i >= 19999) return nullptr;
-      std::memcpy(out, kSignedFourDigits.text[i], 8);
-      return out + kSignedFourDigits.text[i][7];
+      const SignedFourDigits& table = kField ? kSignedFields : kSignedFourDigits;
+      std::memcpy(out, table.text[i], 8);
+      return out + table.text[i][7];
     }
     auto u = static_cast<unsigned>(whole);
     if (whole < 0) {
@@ -161,6 +167,8 @@ NCOFFSET_INLINE_STEP char* writeFixed(char* out, double v) {
   const double a = std::fabs(v);
   if (!(a < (kSmall ? 1e4 : 1e9))) return nullptr;  // also NaN
   if (a < 1e-4) return nullptr;                     // {fmt} writes these with an exponent
+  static_assert(kSmall || !kField);
+  if constexpr (kField) *out++ = ',';
   // Signed 64-bit conversions (one instruction each): m < 1e15 + 1.
   const auto m = static_cast<long long>(a * 1e6 + 0.5);
   if (static_cast<double>(m) / 1e6 != a) return nullptr;  // more than six decimals

@@ -85,6 +85,16 @@ class CsvWriter : public core::RowSink, public PathSink {
   };
   static char* writeMemo(char* p, double v, Memo& m);
   static char* writeSmallMemo(char* p, double v, Memo& m);
+  // The end of the usual row of a line after y (",z,,,,feed\n"), for the next row of a line
+  // with the same z and feed (docs/performance.md §51).
+  struct TailMemo {
+    double z = std::numeric_limits<double>::quiet_NaN();  // equal to no z
+    double feed = 0;
+    bool has_feed = false;
+    size_t len = 0;
+    char text[32] = {};
+  };
+  char* writeLineTail(char* p, double z, bool has_feed, double feed);
   // The line number's text: the row before's while the line repeats, incremented in place
   // while the rows come from consecutive lines (docs/performance.md §37).
   struct LineMemo {
@@ -114,7 +124,9 @@ class CsvWriter : public core::RowSink, public PathSink {
   char* rows_flush_ = nullptr;  // rows_.get() + kRowsFlush
   AxisColumns axes_;
   size_t axis_room_ = 0;  // characters the axis fields of a row may take
-  Memo z_, feed_;
+  Memo z_, feed_;         // generalRow's
+  Memo zf_, feedf_;       // the usual row's: the fields with their comma (",49")
+  TailMemo tail_;
   LineMemo line_;
 };
 

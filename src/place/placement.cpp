@@ -158,13 +158,15 @@ NCOFFSET_INLINE_STEP bool rowInRange(const Vec3& end, const Vec3& centre, bool a
   return inRange(end) && (!arc || inRange(centre));
 }
 
-// outOfRange of a row (Placement::placeRow): its segment built for the alarm's text.
-[[noreturn, gnu::cold, gnu::noinline]] void rowOutOfRange(Motion motion, const Vec3& end,
-                                                          const Vec3& centre, int line) {
+// outOfRange of a row (Placement::placeRow): its segment built for the alarm's text. (The
+// coordinates in registers: by reference, placeRow kept its points on its stack, §51.)
+[[noreturn, gnu::cold, gnu::noinline]] void rowOutOfRange(Motion motion, double x, double y,
+                                                          double z, double cx, double cy, double cz,
+                                                          int line) {
   Segment s;
   s.motion = motion;
-  s.end = end;
-  s.centre = centre;
+  s.end = {x, y, z};
+  s.centre = {cx, cy, cz};
   outOfRange(s, line);
 }
 
@@ -208,7 +210,7 @@ NCOFFSET_INLINE_STEP void Placement::placeRow(const MotionBlock& m, Motion motio
   path_.at = end;
   const bool arc = motion == Motion::G2 || motion == Motion::G3;
   if (check && !rowInRange(end, centre, arc)) [[unlikely]]
-    rowOutOfRange(motion, end, centre, line);
+    rowOutOfRange(motion, end.x, end.y, end.z, centre.x, centre.y, centre.z, line);
   seq_ = seq;
   row_->row(line, motion, has_feed, end.x, end.y, end.z, centre.x, centre.y, centre.z, feed);
 }

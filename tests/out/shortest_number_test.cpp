@@ -123,7 +123,8 @@ TEST(ShortestNumber, EveryWholeNumberAsFmt) {
     EXPECT_EQ(viaInline(v), viaFmt(v)) << v;
 }
 
-// writeFixed<true> (CsvWriter's usual row): where it writes a text, {fmt}'s; it writes one for
+// writeFixed<true> (CsvWriter's usual row): where it writes a text, {fmt}'s (writeFixed<true,
+// true>: with a comma before it); it writes one for
 // every whole number within ±9999 (the signed table, §49) and every decimal of at most six
 // places from 1e-4 to below 10000, and none from 10000 on. Every whole number within ±100000 and
 // its neighbours, 300,000 random decimals, and the limits.
@@ -135,6 +136,13 @@ TEST(ShortestNumber, SmallFixedAsFmt) {
       ASSERT_EQ(std::string(static_cast<const char*>(text), end), viaFmt(v)) << v;
     }
     ASSERT_EQ(end != nullptr, written) << v;
+    // The field (its comma from the table, §51): the same with a comma before it.
+    const char* field_end = writeFixed<true, true>(text, v);
+    if (field_end) {
+      ASSERT_EQ(text[0], ',') << v;
+      ASSERT_EQ(std::string(static_cast<const char*>(text) + 1, field_end), viaFmt(v)) << v;
+    }
+    ASSERT_EQ(field_end != nullptr, written) << v;
   };
   for (int i = -100000; i <= 100000; ++i) {
     check(i, i >= -9999 && i <= 9999);
