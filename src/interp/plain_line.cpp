@@ -102,7 +102,7 @@ NCOFFSET_INLINE_STEP void Interpreter::finishPlainBlock(int column) {
     threadLeadWords();  // CR= without G2/G3: the circle alarm
   bool moved = false;
   if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
-    moved = motion_.buildPlain(words_, modal_, {line_, file_, feed_before_, motion_before_});
+    moved = motion_.buildPlain(words_, modal_, line_, file_, feed_before_, motion_before_);
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
   if (!moved) motion_.output().blockWithoutMotion();
@@ -322,19 +322,26 @@ NCOFFSET_INLINE_STEP Interpreter::InPlace Interpreter::lineInPlace(ProgramLevel&
   if (at >= all.size()) [[unlikely]]
     return InPlace::No;
   const char* const begin = all.data() + at;
-  if (refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32] == begin)
-    return InPlace::Refused;
-  // (After the refused lines: a loop of other lines does not ask on every line.)
+  const char* const refused = refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32];
   if (!in_place_) [[unlikely]] {
+    // After a line that is not plain the refused lines first: a loop of other lines does not
+    // ask inPlaceAllowed on every line. After a plain line only when the scan refuses the line
+    // (the usual plain line does not look them up).
+    if (refused == begin) return InPlace::Refused;
     in_place_ = inPlaceAllowed(lvl);
     if (!in_place_) return InPlace::No;
+    // The level's file: while in_place_ holds, only plain lines of this level ran, which keep it
+    // (a level's change and every other change of file_ come with a line that is not plain).
+    file_ = lvl.program->file_id;
   }
   Motion motion;
   core::TrcMode trc;
   const char* const stop = plainWords(
       begin, [](const char* p) { return *p == '\n' || (*p == '\r' && p[1] == '\n'); }, motion, trc);
+  if (stop == nullptr) [[unlikely]]
+    return refused == begin ? InPlace::Refused : InPlace::No;
   const auto len = static_cast<size_t>(stop - begin);
-  if (stop == nullptr || len > max_len) return InPlace::No;
+  if (len > max_len) return InPlace::No;
   line_pos_ = lvl.pos;
   lvl.pos.offset = at + len + (*stop == '\n' ? 1 : 2);
   ++lvl.pos.line;
@@ -354,11 +361,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   const size_t max_len = options_.limits.max_line_length;
   while (!ended_) {
     ProgramLevel& lvl = flow_.level();
-    file_ = lvl.program->file_id;
-    const InPlace in_place = lineInPlace(lvl, max_len);
+    const InPlace in_place = lineInPlace(lvl, max_len);  // sets file_ where it reads
     bool plain = in_place == InPlace::Taken;
     if (!plain) {
       in_place_ = false;  // the line may change what inPlaceAllowed asks, or the level end
+      file_ = lvl.program->file_id;
       const bool more = flow_.nextLine(text, line_pos_);
       line_ = line_pos_.line;
       line_text_ = text;
