@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <new>
 
@@ -279,6 +280,7 @@ void Interpreter::startRun(LoadedProgram& program, bool init_file) {
   block_budget_ =
       executed_ + (options_.limits.max_blocks > 0 ? options_.limits.max_blocks
                                                   : options_.limits.max_blocks_auto_base);
+  line_stop_ = executed_;          // the first line takes countLine's other way, which sets it
   if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
   words_plain_ = false;
@@ -286,16 +288,27 @@ void Interpreter::startRun(LoadedProgram& program, bool init_file) {
 }
 
 // The bookkeeping of every line read: the pages read before released now and then, the block
-// budget, the blocks without motion.
+// budget (lineStop, where executed_ reaches line_stop_: one test a line for both), the blocks
+// without motion.
 NCOFFSET_INLINE_STEP void Interpreter::countLine(ProgramLevel& lvl) {
-  if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
-  if (++executed_ > block_budget_) [[unlikely]]
-    blockBudgetReached();
+  if (executed_ >= line_stop_) [[unlikely]]
+    lineStop(lvl);
+  else
+    ++executed_;
   if (++without_motion_ > options_.limits.max_blocks_without_motion)
     raise(AlarmNumber::NoMotionLimit,
           fmt::format("{} blocks executed without any motion (endless loop?); raise "
                       "--max-blocks-without-motion",
                       options_.limits.max_blocks_without_motion));
+}
+
+// countLine's tests of the pages to release (every 65,536 lines) and of the block budget, and
+// the next count where one of them may hold again.
+void Interpreter::lineStop(ProgramLevel& lvl) {
+  if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
+  if (++executed_ > block_budget_) [[unlikely]]
+    blockBudgetReached();  // raises, or sets a larger budget
+  line_stop_ = std::min((executed_ + 0xFFFF) & ~0xFFFFLL, block_budget_);
 }
 
 // Where lineInPlace may read lines: the level's text ends with a newline (every scan stops at
