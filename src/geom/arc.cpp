@@ -24,9 +24,7 @@ struct Chord {
 
 Chord chord(Vec2 start, Vec2 end) {
   const double d = dist(start, end);
-  if (d < 1e-9)
-    raise(AlarmNumber::CircleProgramming,
-          "circle programming error: a full circle needs its centre (I, J, K)");
+  if (d < 1e-9) fullCircleAlarm();
   Vec2 mid{(start.a + end.a) / 2, (start.o + end.o) / 2};
   Vec2 u{(end.a - start.a) / d, (end.o - start.o) / d};
   return {d, mid, {-u.o, u.a}};
@@ -34,24 +32,27 @@ Chord chord(Vec2 start, Vec2 end) {
 
 }  // namespace
 
+void fullCircleAlarm() {
+  raise(AlarmNumber::CircleProgramming,
+        "circle programming error: a full circle needs its centre (I, J, K)");
+}
+
+void radiusZeroAlarm() {
+  raise(AlarmNumber::CircleProgramming, "circle programming error: CR=0");
+}
+
+void chordAlarm(double chord, double diameter) {
+  raise(AlarmNumber::CircleEndPoint,
+        fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
+                    chord, diameter));
+}
+
 ArcSolution arcByRadius(Vec2 start, Vec2 end, double cr, bool ccw, double tol_const,
                         double tol_factor) {
   ArcSolution s;
   s.end = end;
-  const Chord c = chord(start, end);
-  const double d = c.length;
-  double rad = std::fabs(cr);
-  if (rad < 1e-9) raise(AlarmNumber::CircleProgramming, "circle programming error: CR=0");
-  double tol = maxOf(tol_const, tol_factor * rad);
-  if (d > 2 * rad + tol)
-    raise(AlarmNumber::CircleEndPoint,
-          fmt::format("error in end point of circle: chord {:.6g} longer than the diameter {:.6g}",
-                      d, 2 * rad));
-  const double h = std::sqrt(maxOf(0.0, rad * rad - d * d / 4));
-  bool small = cr > 0;  // CR>0: arc up to 180 degrees
-  double side = (ccw == small) ? 1 : -1;
-  s.centre = {c.mid.a + side * h * c.left.a, c.mid.o + side * h * c.left.o};
-  s.radius = rad;
+  s.centre = centreByRadius(start, end, cr, ccw, tol_const, tol_factor);
+  s.radius = std::fabs(cr);
   return s;
 }
 

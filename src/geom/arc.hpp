@@ -37,9 +37,36 @@ inline double maxOf(double a, double b) {
   return a < b ? b : a;
 }
 
-// solveArc for a circle by its radius CR= (negative: more than a semicircle) from `start` to
-// `end`: what solveArc does with a request of only these (the motion builder's short way calls
-// it without building one).
+// The alarms of a circle by its radius (out of line: the usual circle raises none).
+[[noreturn, gnu::cold]] void fullCircleAlarm();
+[[noreturn, gnu::cold]] void radiusZeroAlarm();
+[[noreturn, gnu::cold]] void chordAlarm(double chord, double diameter);
+
+// The centre of a circle by its radius CR= (negative: more than a semicircle) from `start` to
+// `end`, with its alarms in solveArc's order; inline, so that the motion builder's short way
+// keeps the coordinates in registers (a call returned them through memory, and GCC packed them
+// into vectors through the stack, where loads wait for the stores: docs/performance.md §47).
+// The chord's unit normal times ±1 is formed before h is known: (side * h) * l is
+// h * (side * l) bit for bit (side is ±1), one multiplication fewer behind the square roots.
+[[gnu::always_inline]] inline Vec2 centreByRadius(Vec2 start, Vec2 end, double cr, bool ccw,
+                                                  double tol_const, double tol_factor) {
+  const double da = end.a - start.a, dor = end.o - start.o;
+  // Coordinates stay within 1e9 mm (block_executor): the squares cannot overflow, no hypot.
+  const double d = std::sqrt(da * da + dor * dor);
+  if (d < 1e-9) fullCircleAlarm();
+  const double mid_a = (start.a + end.a) / 2, mid_o = (start.o + end.o) / 2;
+  const double left_a = -(dor / d), left_o = da / d;  // the unit normal to the chord's left
+  const double rad = std::fabs(cr);
+  if (rad < 1e-9) radiusZeroAlarm();
+  const double tol = maxOf(tol_const, tol_factor * rad);
+  if (d > 2 * rad + tol) chordAlarm(d, 2 * rad);
+  const double side = (ccw == (cr > 0)) ? 1 : -1;  // CR>0: arc up to 180 degrees
+  const double h = std::sqrt(maxOf(0.0, rad * rad - d * d / 4));
+  return {mid_a + h * (side * left_a), mid_o + h * (side * left_o)};
+}
+
+// solveArc for a circle by its radius CR= from `start` to `end`: what solveArc does with a
+// request of only these.
 ArcSolution arcByRadius(Vec2 start, Vec2 end, double cr, bool ccw, double tol_const,
                         double tol_factor);
 

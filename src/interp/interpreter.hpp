@@ -168,7 +168,8 @@ class Interpreter final : public lang::Environment {
   enum class InPlace { Taken, No, Refused };
   InPlace lineInPlace(ProgramLevel& lvl, size_t max_len);
   bool inPlaceAllowed(const ProgramLevel& lvl) const;
-  void countLine(ProgramLevel& lvl);  // run()'s bookkeeping of a line read
+  void countLine(ProgramLevel& lvl);                   // run()'s bookkeeping of a line read
+  [[gnu::noinline]] void lineStop(ProgramLevel& lvl);  // countLine's rare tests
   bool plainLineWord(const char*& p, Motion& motion, core::TrcMode& trc);
   void finishPlainLine() {  // inline: once a block, from run()
     words_plain_ = false;   // until the block is through without an alarm (executeBlock)
@@ -362,6 +363,7 @@ class Interpreter final : public lang::Environment {
   long long executed_ = 0;
   long long run_start_ = 0;       // executed_ when the run began
   long long block_budget_ = 0;    // executed_ beyond which blockBudgetReached() decides (99002)
+  long long line_stop_ = 0;       // executed_ from which countLine takes lineStop
   long long without_motion_ = 0;  // blocks executed since the last motion
   LoopWatch loop_;                // ends a loop that provably never ends (99007)
   size_t for_continue_ = static_cast<size_t>(-1);

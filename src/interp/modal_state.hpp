@@ -102,9 +102,10 @@ struct BlockWords {
   void clearPlain() {
     axis[0] = axis[1] = axis[2] = false;
     axis_value[0] = axis_value[1] = axis_value[2] = 0;
-    cr.reset();
+    // Assigned, not reset(): reset() tests the flag first (two instructions more a line).
+    cr = std::optional<double>();
     motion_word = false;
-    f.reset();
+    f = std::optional<double>();
   }
   // clear() for every field but plainWord's, which keep their values: the plain line collected
   // them after a block of other words (interp/plain_line.cpp). plainWord's axis_mode is the

@@ -45,7 +45,13 @@ class MotionBuilder {
   // the frame of the last motion) its target, the tool length and the compensation settings
   // take the short way (motion_plain.cpp); anything else goes to build(), its twin
   // (tests/interp/motion_fast_path_test.cpp).
-  bool buildPlain(const BlockWords& w, const ModalState& modal, const BlockContext& at);
+  bool buildPlain(const BlockWords& w, const ModalState& modal, const BlockContext& at) {
+    return buildPlain(w, modal, at.line, at.file, at.feed_before, at.motion_before);
+  }
+  // The same with the context's fields in registers (the block loop's plain line: no context
+  // built in memory for every block).
+  bool buildPlain(const BlockWords& w, const ModalState& modal, int line, int file,
+                  double feed_before, Motion motion_before);
   // build() for a block of any words under the interpreter's own modal state (finishBlock):
   // buildPlain when its words need nothing more (no G53/G153/SUPA, AC/IC/DAC/.., SAR, G63).
   bool buildBlock(const BlockWords& w, const ModalState& modal, const BlockContext& at);
@@ -92,6 +98,9 @@ class MotionBuilder {
   // arc()'s last step: the solution's end point and centre into the block (`f`: the start).
   void arcEnd(const BlockWords& w, const geom::ArcSolution& sol, PlaneAxes pa, const double (&f)[3],
               Vec3& target);
+  // arc() for buildPlain from the last programmed point: `to` by value, so that buildPlain's
+  // target has no address (and stays in registers).
+  [[gnu::noinline]] Vec3 generalArc(const BlockWords& w, const ModalState& modal, Vec3 to);
   // arc() for a circle by CR= alone (no centre, AR=) whose end point is programmed (buildPlain).
   void radiusArc(const BlockWords& w, const ModalState& modal, const Vec3& target);
   // G0/G1: the tool length taken up by each axis the block moves (W1 2.1, spec §2.6). False
@@ -104,6 +113,8 @@ class MotionBuilder {
   // linear block's tool length take-up; false when the block moves nowhere.
   Vec3 plainTarget(const BlockWords& w) const;
   bool plainTakeUp(const BlockWords& w, const ModalState& modal, const Vec3& to);
+  // The block's compensation mode (buildPlain), stored with the kept radius in one piece.
+  void plainMode(core::TrcMode mode);
   // compensationSettings() for buildPlain, with the tool length vector it keeps.
   void plainSettings(const ModalState& modal);
   [[gnu::cold, noreturn]] static void targetAlarm(double value, int axis);

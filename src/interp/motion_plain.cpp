@@ -9,7 +9,11 @@
 // in the same order (tests/interp/motion_fast_path_test.cpp).
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #include "interp/motion_builder.hpp"
 #include "ncoffset/alarm.hpp"
@@ -42,6 +46,19 @@ void MotionBuilder::targetAlarm(double value, int axis) {
   return to;
 }
 
+// m_.trc.mode = mode, written with the kept radius behind it as one 16-byte store: the SAR
+// stage's note loads the settings' head (mode and radius) as one piece, and a load that spans
+// a narrower store waits until that store has left the processor (a store-forwarding stall of
+// every block, perf annotate, docs/performance.md §47).
+[[gnu::always_inline]] inline void MotionBuilder::plainMode(core::TrcMode mode) {
+  using Pair = double __attribute__((vector_size(16)));
+  static_assert(offsetof(core::TrcSettings, radius) == 8 && sizeof(Pair) == 16);
+  std::uint64_t low = 0;  // the mode's byte and the padding behind it
+  std::memcpy(&low, &mode, sizeof mode);
+  const Pair head = {std::bit_cast<double>(low), m_.trc.radius};
+  std::memcpy(static_cast<void*>(&m_.trc), &head, sizeof head);  // trivially copyable
+}
+
 // takeUpLength() without a frame, with the length vector kept since the settings were built.
 [[gnu::always_inline]] inline bool MotionBuilder::plainTakeUp(const BlockWords& w,
                                                               const ModalState& modal,
@@ -60,25 +77,46 @@ void MotionBuilder::targetAlarm(double value, int axis) {
 
 // arc() for a circle by CR= alone. arcByRadius's end point is the programmed one (`end` itself),
 // so the target and the block's end stay as buildPlain wrote them, and of arcEnd's stores only
-// the centre's, the applicate's and the turns' change the block.
-void MotionBuilder::radiusArc(const BlockWords& w, const ModalState& modal, const Vec3& target) {
-  const PlaneAxes pa = planeAxes(modal.plane);
-  double c[3] = {wcs_.x, wcs_.y, wcs_.z};
-  const double t[3] = {target.x, target.y, target.z};
-  const geom::Vec2 start{c[pa.abscissa], c[pa.ordinate]}, end{t[pa.abscissa], t[pa.ordinate]};
-  const geom::Vec2 centre =
-      geom::arcByRadius(start, end, toMm(modal, *w.cr), m_.motion == Motion::G3,
-                        data_.get(md_circle_const_), data_.get(md_circle_factor_))
-          .centre;
-  c[pa.abscissa] = centre.a;
-  c[pa.ordinate] = centre.o;
-  m_.centre = {c[0], c[1], c[2]};
-  m_.applicate = pa.applicate;
+// the centre's, the applicate's and the turns' change the block. Inline, with the plane's axes
+// by name: buildPlain's target and the centre stay in registers (through arrays on the stack
+// and a returned ArcSolution, loads wider than the stores before them waited for those, behind
+// the square roots: docs/performance.md §47).
+[[gnu::always_inline]] inline void MotionBuilder::radiusArc(const BlockWords& w,
+                                                            const ModalState& modal,
+                                                            const Vec3& target) {
+  const double cr = toMm(modal, *w.cr);
+  const bool ccw = m_.motion == Motion::G3;
+  const double tol_const = data_.get(md_circle_const_), tol_factor = data_.get(md_circle_factor_);
+  const Vec3& f = wcs_;
+  // The centre in the plane from the start (sa, so) to the end (ea, eo), abscissa first; inline
+  // in each of the three places (one call after choosing the points cost 5 instructions more).
+  auto centre = [&](double sa, double so, double ea, double eo) __attribute__((always_inline)) {
+    return geom::centreByRadius({sa, so}, {ea, eo}, cr, ccw, tol_const, tol_factor);
+  };
+  Vec3& c = m_.centre;
+  if (modal.plane == Plane::G18) {  // Z X
+    const geom::Vec2 k = centre(f.z, f.x, target.z, target.x);
+    c = {k.o, f.y, k.a};
+    m_.applicate = 1;
+  } else if (modal.plane == Plane::G19) {  // Y Z
+    const geom::Vec2 k = centre(f.y, f.z, target.y, target.z);
+    c = {f.x, k.a, k.o};
+    m_.applicate = 0;
+  } else {  // G17: X Y
+    const geom::Vec2 k = centre(f.x, f.y, target.x, target.y);
+    c = {k.a, k.o, f.z};
+    m_.applicate = 2;
+  }
   m_.turns = w.turn.value_or(0);
 }
 
-bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
-                               const BlockContext& at) {
+Vec3 MotionBuilder::generalArc(const BlockWords& w, const ModalState& modal, Vec3 to) {
+  arc(w, modal, wcs_, true, to);
+  return to;
+}
+
+bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal, int line, int file,
+                               double feed_before, Motion motion_before) {
   core::MotionBlock& m = m_;
   // A frame (or a changed one: its start point, its copy into the block) or a thread motion
   // (its lead): the general way. Only a line that is not plain changes them (plain lines
@@ -86,14 +124,14 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
   if (!plain_settings_) [[unlikely]] {
     if (!frames_.isIdentity() || m.frame.state() != frames_.blockFrame().state() ||
         isThreadMotion(modal.motion) || !short_way)
-      return build(w, modal, at);
+      return build(w, modal, {line, file, feed_before, motion_before});
     plainSettings(modal);
   }
-  m.trc.mode = modal.trc;  // G40/G41/G42 may be a plain line's word: not kept
+  plainMode(modal.trc);  // G40/G41/G42 may be a plain line's word: not kept
   Vec3 to = plainTarget(w);
   m.motion = modal.motion;
-  m.line = at.line;
-  m.file = at.file;
+  m.line = line;
+  m.file = file;
   m.start = bcs_;  // no frame: WCS = BCS
   m.end = to;
   m.has_feed = m.motion != Motion::G0;
@@ -108,7 +146,7 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal,
         (w.axis[pa.abscissa] || w.axis[pa.ordinate]))
       radiusArc(w, modal, to);
     else
-      arc(w, modal, wcs_, true, to);
+      to = generalArc(w, modal, to);
     if (outOfRange(m.end + applied_offset_) || outOfRange(m.centre)) [[unlikely]]
       rangeAlarm(true);
   } else {

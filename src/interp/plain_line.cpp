@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <new>
 
@@ -102,7 +103,7 @@ NCOFFSET_INLINE_STEP void Interpreter::finishPlainBlock(int column) {
     threadLeadWords();  // CR= without G2/G3: the circle alarm
   bool moved = false;
   if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
-    moved = motion_.buildPlain(words_, modal_, {line_, file_, feed_before_, motion_before_});
+    moved = motion_.buildPlain(words_, modal_, line_, file_, feed_before_, motion_before_);
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
   if (!moved) motion_.output().blockWithoutMotion();
@@ -279,6 +280,7 @@ void Interpreter::startRun(LoadedProgram& program, bool init_file) {
   block_budget_ =
       executed_ + (options_.limits.max_blocks > 0 ? options_.limits.max_blocks
                                                   : options_.limits.max_blocks_auto_base);
+  line_stop_ = executed_;          // the first line takes countLine's other way, which sets it
   if (!init_file) announceAxes();  // the output columns of the additional axes
   loop_.reset();
   words_plain_ = false;
@@ -286,16 +288,27 @@ void Interpreter::startRun(LoadedProgram& program, bool init_file) {
 }
 
 // The bookkeeping of every line read: the pages read before released now and then, the block
-// budget, the blocks without motion.
+// budget (lineStop, where executed_ reaches line_stop_: one test a line for both), the blocks
+// without motion.
 NCOFFSET_INLINE_STEP void Interpreter::countLine(ProgramLevel& lvl) {
-  if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
-  if (++executed_ > block_budget_) [[unlikely]]
-    blockBudgetReached();
+  if (executed_ >= line_stop_) [[unlikely]]
+    lineStop(lvl);
+  else
+    ++executed_;
   if (++without_motion_ > options_.limits.max_blocks_without_motion)
     raise(AlarmNumber::NoMotionLimit,
           fmt::format("{} blocks executed without any motion (endless loop?); raise "
                       "--max-blocks-without-motion",
                       options_.limits.max_blocks_without_motion));
+}
+
+// countLine's tests of the pages to release (every 65,536 lines) and of the block budget, and
+// the next count where one of them may hold again.
+void Interpreter::lineStop(ProgramLevel& lvl) {
+  if ((executed_ & 0xFFFF) == 0) lvl.program->source->releaseBefore(line_pos_.offset);
+  if (++executed_ > block_budget_) [[unlikely]]
+    blockBudgetReached();  // raises, or sets a larger budget
+  line_stop_ = std::min((executed_ + 0xFFFF) & ~0xFFFFLL, block_budget_);
 }
 
 // Where lineInPlace may read lines: the level's text ends with a newline (every scan stops at
@@ -322,19 +335,26 @@ NCOFFSET_INLINE_STEP Interpreter::InPlace Interpreter::lineInPlace(ProgramLevel&
   if (at >= all.size()) [[unlikely]]
     return InPlace::No;
   const char* const begin = all.data() + at;
-  if (refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32] == begin)
-    return InPlace::Refused;
-  // (After the refused lines: a loop of other lines does not ask on every line.)
+  const char* const refused = refused_[(reinterpret_cast<std::uintptr_t>(begin) >> 4) % 32];
   if (!in_place_) [[unlikely]] {
+    // After a line that is not plain the refused lines first: a loop of other lines does not
+    // ask inPlaceAllowed on every line. After a plain line only when the scan refuses the line
+    // (the usual plain line does not look them up).
+    if (refused == begin) return InPlace::Refused;
     in_place_ = inPlaceAllowed(lvl);
     if (!in_place_) return InPlace::No;
+    // The level's file: while in_place_ holds, only plain lines of this level ran, which keep it
+    // (a level's change and every other change of file_ come with a line that is not plain).
+    file_ = lvl.program->file_id;
   }
   Motion motion;
   core::TrcMode trc;
   const char* const stop = plainWords(
       begin, [](const char* p) { return *p == '\n' || (*p == '\r' && p[1] == '\n'); }, motion, trc);
+  if (stop == nullptr) [[unlikely]]
+    return refused == begin ? InPlace::Refused : InPlace::No;
   const auto len = static_cast<size_t>(stop - begin);
-  if (stop == nullptr || len > max_len) return InPlace::No;
+  if (len > max_len) return InPlace::No;
   line_pos_ = lvl.pos;
   lvl.pos.offset = at + len + (*stop == '\n' ? 1 : 2);
   ++lvl.pos.line;
@@ -354,11 +374,11 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
   const size_t max_len = options_.limits.max_line_length;
   while (!ended_) {
     ProgramLevel& lvl = flow_.level();
-    file_ = lvl.program->file_id;
-    const InPlace in_place = lineInPlace(lvl, max_len);
+    const InPlace in_place = lineInPlace(lvl, max_len);  // sets file_ where it reads
     bool plain = in_place == InPlace::Taken;
     if (!plain) {
       in_place_ = false;  // the line may change what inPlaceAllowed asks, or the level end
+      file_ = lvl.program->file_id;
       const bool more = flow_.nextLine(text, line_pos_);
       line_ = line_pos_.line;
       line_text_ = text;

@@ -265,5 +265,40 @@ TEST(SolveArc, MaxOfIsFmax) {
     }
 }
 
+// centreByRadius against the centre as arcByRadius computed it before (docs/performance.md §47:
+// the chord's midpoint plus (side * h) times its unit normal; now h times (side * normal)), bit
+// for bit, on random chords and radii of both signs and both directions, down to a half circle
+// (h == 0) and zero coordinates.
+TEST(SolveArc, CentreByRadiusAsBefore) {
+  auto before = [](Vec2 s, Vec2 e, double cr, bool ccw) {
+    const double a = e.a - s.a, o = e.o - s.o;
+    const double d = std::sqrt(a * a + o * o);
+    const Vec2 mid{(s.a + e.a) / 2, (s.o + e.o) / 2};
+    const Vec2 u{(e.a - s.a) / d, (e.o - s.o) / d};
+    const Vec2 left{-u.o, u.a};
+    const double rad = std::fabs(cr);
+    const double h = std::sqrt(maxOf(0.0, rad * rad - d * d / 4));
+    const double side = (ccw == (cr > 0)) ? 1 : -1;
+    return Vec2{mid.a + side * h * left.a, mid.o + side * h * left.o};
+  };
+  std::uint64_t state = 47;
+  auto next = [&state](int n) {  // 0 .. n-1
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
+  };
+  auto coordinate = [&next] { return next(4) == 0 ? 0.0 : (next(200001) - 100000) / 1000.0; };
+  for (int i = 0; i < 20000; ++i) {
+    const Vec2 s{coordinate(), coordinate()}, e{coordinate(), coordinate()};
+    const double d = std::sqrt((e.a - s.a) * (e.a - s.a) + (e.o - s.o) * (e.o - s.o));
+    if (d < 1e-6) continue;
+    const double rad = next(3) == 0 ? d / 2 : d / 2 + next(100000) / 997.0;  // a half circle too
+    const double cr = next(2) ? rad : -rad;
+    const bool ccw = next(2) != 0;
+    const Vec2 got = centreByRadius(s, e, cr, ccw, 0.01, 0.001), want = before(s, e, cr, ccw);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(got.a), std::bit_cast<std::uint64_t>(want.a)) << i;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(got.o), std::bit_cast<std::uint64_t>(want.o)) << i;
+  }
+}
+
 }  // namespace
 }  // namespace ncoffset::geom
