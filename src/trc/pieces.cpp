@@ -117,7 +117,7 @@ RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, d
 void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0, double r1,
                                         long index, bool restart) const {
   if (r0 == r1 && metric_.identity && !general_paths_)  // the usual element (§36)
-    return compensateUsual(p, m, r0, index, restart);
+    return compensateUsual(p, m, r0, index, restart, kUnmeasured, planeAxes(m.plane));
   startPiece(p, r0, r1, index, restart);
   p.programmed = planeElement(m);
   if (!metric_.identity) toMetric(p.programmed);
@@ -152,19 +152,6 @@ Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const
   double r = at_end ? p.r1 : p.r0;
   auto e = geom::equidistant(p.programmed, p.side * r);
   return e ? *e : p.compensated;
-}
-
-void RadiusCompensation::emitPiece(const Piece& p) {
-  // On the path of S (the approach line starts where P stood): P - S (cutting-edge-positions.md).
-  const std::uint8_t tip_at = !p.block.has_tip ? core::kTipNone
-                              : p.approach     ? core::kTipEnd
-                                               : core::kTipBoth;
-  // The usual piece: nothing inserted before it, no block waiting after it, no scaling frame.
-  // The element itself goes on, no copy of the block nor a geometry built from the two, in a
-  // tail call (docs/performance.md §37).
-  if (p.transition.empty() && p.waiting.empty() && metric_.identity) [[likely]]
-    return out_.element(p.block, p.compensated, tip_at);
-  emitWithBlocks(p, tip_at);
 }
 
 void RadiusCompensation::emitWithBlocks(const Piece& p, std::uint8_t tip_at) {

@@ -171,7 +171,16 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
 
 // (Here, inlined into motionOn, its one caller: once a block, docs/performance.md §36.)
 NCOFFSET_INLINE_STEP void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m,
-                                                             long index, bool restart) {
+                                                             long index, bool restart,
+                                                             double length, PlaneAxes pa) {
+  // The usual block: the value and G41/G42 of the last one. The general path below gives the
+  // same value at both ends, fabs(radius), and the same side (sideOf reads just these two), so
+  // only the settings are kept (§48).
+  if (m.trc.radius == settings_.radius && m.trc.mode == settings_.mode && metric_.identity &&
+      !general_paths_) {
+    settings_ = m.trc;
+    return compensateUsual(p, m, std::fabs(settings_.radius), index, restart, length, pa);
+  }
   const double old_side = side(), old_r = std::fabs(settings_.radius);
   const double new_r = std::fabs(m.trc.radius);
   setSettings(m.trc);
@@ -183,9 +192,18 @@ NCOFFSET_INLINE_STEP void RadiusCompensation::compensateNext(Piece& p, const Mot
   if (new_side) r0 = r1 = new_r;
   // The usual element built here, without a call (§42).
   if (r0 == r1 && metric_.identity && !general_paths_)
-    compensateUsual(p, m, r0, index, restart || new_side);
+    compensateUsual(p, m, r0, index, restart || new_side, length, pa);
   else
     compensateInto(p, m, r0, r1, index, restart || new_side);
+}
+
+void RadiusCompensation::waitOn(const MotionBlock& m) {
+  if (window_.back().emitted)  // after STOPRE: runs where the last element ended
+    emit(atPoint(m, window_.back().compensated.p1));
+  else
+    window_.back().waiting.push_back(m);
+  settings_.max_dummy_blocks = m.trc.max_dummy_blocks;
+  blockWithoutMotion();
 }
 
 void RadiusCompensation::motionOn(const MotionBlock& m) {
@@ -194,17 +212,13 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
     return;
   }
   if (checkSameSettings(m)) return;  // handled by CUTCONON (constant_compensation.cpp)
-  if (!planeMotion(m)) {
-    if (window_.back().emitted)  // after STOPRE: runs where the last element ended
-      emit(atPoint(m, window_.back().compensated.p1));
-    else
-      window_.back().waiting.push_back(m);
-    settings_.max_dummy_blocks = m.trc.max_dummy_blocks;
-    blockWithoutMotion();
-    return;
-  }
+  // planeMotion, with a line's length kept for its unit vector (compensateConstant, §48).
+  const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
+  const PlaneAxes pa = planeAxes(m.plane);
+  const double length = arc ? kUnmeasured : lineLength(m, pa);
+  if (!arc && !(length > geom::tol::kPoint)) return waitOn(m);
   Piece& next = window_.pushBack();
-  compensateNext(next, m, ++count_, restart_next_);
+  compensateNext(next, m, ++count_, restart_next_, length, pa);  // (an arc's: kUnmeasured)
   restart_next_ = false;
   Piece& cur = window_[window_.size() - 2];
   if (!joinTangent(cur, next)) connect(cur, next);  // a tangent junction without the call
@@ -219,10 +233,12 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
   dummy_blocks_ = 0;
 }
 
-void RadiusCompensation::release() {
+NCOFFSET_INLINE_STEP void RadiusCompensation::release() {
   const long reach = count_ + 1 - settings_.check_blocks;
-  while (window_.size() > 1 && window_.front().index < reach) {
-    if (!window_.front().emitted) emitPiece(window_.front());
+  while (window_.size() > 1) {
+    const Piece& f = window_.front();
+    if (f.index >= reach) break;
+    if (!f.emitted) emitPiece(f);
     window_.popFront();
   }
 }

@@ -159,11 +159,16 @@ class RadiusCompensation final : public core::Stage {
   // The block moves in the plane. (Inline: asked for every block.)
   static bool planeMotion(const core::MotionBlock& m) {
     if (m.motion == Motion::G2 || m.motion == Motion::G3) return true;
-    // The plane part of the block: toElement(m).p1 - p0, without building the element.
-    const PlaneAxes pa = planeAxes(m.plane);
+    return lineLength(m, planeAxes(m.plane)) > geom::tol::kPoint;  // a shorter motion is none
+  }
+  // The plane length of a line block: toElement(m).p1 - p0, without building the element.
+  // (motionOn keeps it for the line's unit vector, compensateConstant: one root, §48.)
+  // (The plane's axes from the caller: motionOn asks planeAxes once, which GCC does not inline
+  // into it a second time.)
+  static double lineLength(const core::MotionBlock& m, PlaneAxes pa) {
     const geom::Vec2 d{m.end[pa.abscissa] - m.start[pa.abscissa],
                        m.end[pa.ordinate] - m.start[pa.ordinate]};
-    return geom::length(d) > geom::tol::kPoint;  // a shorter motion is none
+    return geom::length(d);
   }
 
   // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.
@@ -191,17 +196,24 @@ class RadiusCompensation final : public core::Stage {
   // compensateInto's steps: the slot's fields but the geometry; the geometry of the usual element
   // (one value, no scaling frame), the fast twin of compensateInto's general path.
   void startPiece(Piece& p, double r0, double r1, long index, bool restart) const;
-  void compensateConstant(Piece& p, const core::MotionBlock& m, double r) const;
+  // (`length`: a line's lineLength when measured, else kUnmeasured; `pa`: planeAxes(m.plane).)
+  void compensateConstant(Piece& p, const core::MotionBlock& m, double r, double length,
+                          PlaneAxes pa) const;
+  static constexpr double kUnmeasured = 0;
   // The usual element whole (usual_element.hpp): compensateInto's fast path, inline.
-  void compensateUsual(Piece& p, const core::MotionBlock& m, double r, long index,
-                       bool restart) const;
+  void compensateUsual(Piece& p, const core::MotionBlock& m, double r, long index, bool restart,
+                       double length, PlaneAxes pa) const;
   // The equidistant at the constant value the corner calculation uses (details Q8: the end
   // value of the first element, the start value of the second).
   geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
   // The next element with its compensation value (a change spreads over the block, Q8) and
   // side (a change of side starts anew at the block's start, like a selection).
   // (`restart`: the element starts anew in any case, after STOPRE.)
-  void compensateNext(Piece& p, const core::MotionBlock& m, long index, bool restart);
+  // (`length`, `pa`: as compensateUsual's.)
+  void compensateNext(Piece& p, const core::MotionBlock& m, long index, bool restart, double length,
+                      PlaneAxes pa);
+  // motionOn for a block without plane motion (out of line: its block on the stack).
+  [[gnu::noinline]] void waitOn(const core::MotionBlock& m);
 
   // --- Corners (corners.cpp, W1 2.4.3, 2.4.5, details Q3/Q4).
   // Joins `next` to the last element of the window (corner).
@@ -209,9 +221,13 @@ class RadiusCompensation final : public core::Stage {
   // connect's first outcome, inline for motionOn (the common case of CAM contours, §31): both
   // elements valid, no change of side, and the equidistants meet, so `next` starts where `cur`
   // ends and nothing is inserted. False: connect decides.
+  // (The distance's root only when its square is not surely below kPoint^2, and with the
+  // general paths, the twin: §48.)
   static bool joinTangent(const Piece& cur, Piece& next) {
-    if (!cur.valid || !next.valid || next.restart ||
-        geom::length(cur.compensated.p1 - next.compensated.p0) >= geom::tol::kPoint)
+    if (!cur.valid || !next.valid || next.restart) return false;
+    const geom::Vec2 d = cur.compensated.p1 - next.compensated.p0;
+    const double d2 = d.a * d.a + d.o * d.o;  // (geom::length's sum)
+    if ((general_paths_ || !detail::surelyBelowPoint(d2)) && std::sqrt(d2) >= geom::tol::kPoint)
       return false;
     next.compensated.p0 = cur.compensated.p1;
     return true;
