@@ -32,6 +32,14 @@
 
 namespace ncoffset::trc {
 
+// v's coordinates in the plane of axes `pa`: G17's read straight, the others through Vec3's
+// index, whose two tests a read keeps when GCC does not know the index (the same values;
+// docs/performance.md §48).
+[[gnu::always_inline]] inline geom::Vec2 planePoint(const Vec3& v, PlaneAxes pa) {
+  if (pa.abscissa == 0 && pa.ordinate == 1) return {v.x, v.y};
+  return {v[pa.abscissa], v[pa.ordinate]};
+}
+
 class RadiusCompensation final : public core::Stage {
  public:
   explicit RadiusCompensation(core::Stage& out) : out_(out) {}
@@ -166,9 +174,7 @@ class RadiusCompensation final : public core::Stage {
   // (The plane's axes from the caller: motionOn asks planeAxes once, which GCC does not inline
   // into it a second time.)
   static double lineLength(const core::MotionBlock& m, PlaneAxes pa) {
-    const geom::Vec2 d{m.end[pa.abscissa] - m.start[pa.abscissa],
-                       m.end[pa.ordinate] - m.start[pa.ordinate]};
-    return geom::length(d);
+    return geom::length(planePoint(m.end, pa) - planePoint(m.start, pa));
   }
 
   // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.

@@ -56,8 +56,7 @@ NCOFFSET_INLINE_STEP void RadiusCompensation::compensateConstant(Piece& p,
   // field of the slot written once, and the equidistant's ends kept (keepRaw) from the same
   // registers (the general path writes the element, reads it back and copies it whole into the
   // equidistant).
-  const geom::Vec2 a{m.start[pa.abscissa], m.start[pa.ordinate]};
-  const geom::Vec2 b{m.end[pa.abscissa], m.end[pa.ordinate]};
+  const geom::Vec2 a = planePoint(m.start, pa), b = planePoint(m.end, pa);
   const double d = p.side * r;
   geom::Element& e = p.programmed;
   geom::Element& o = p.compensated;
@@ -74,7 +73,7 @@ NCOFFSET_INLINE_STEP void RadiusCompensation::compensateConstant(Piece& p,
     o.p1 = p.raw_end = b + d * n;
     return;
   }
-  const geom::Vec2 c{m.centre[pa.abscissa], m.centre[pa.ordinate]};
+  const geom::Vec2 c = planePoint(m.centre, pa);
   e.arc = true;
   e.c = c;
   e.ccw = m.motion == Motion::G3;
