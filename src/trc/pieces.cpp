@@ -46,20 +46,6 @@ MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& 
       like, core::planeGeometry(like, metric_.identity ? e : fromMetric(e), tip_at));
 }
 
-void RadiusCompensation::lineToEnd(MotionBlock& b, const MotionBlock& m, const Element& e) const {
-  if (!metric_.identity || general_paths_ || m.motion == Motion::G2 || m.motion == Motion::G3) {
-    b = toBlock(m, e);
-    return;
-  }
-  copyBlock(b, m);
-  // toBlock without the geometry in between (§36): of the block only the plane start changes
-  // (`e` ends at the block's own end, and lines stay G0/G1).
-  const PlaneAxes pa = planeAxes(m.plane);
-  b.start[pa.abscissa] = e.p0.a;
-  b.start[pa.ordinate] = e.p0.o;
-  b.tip_at = m.has_tip ? core::kTipBoth : core::kTipNone;
-}
-
 MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const {
   Element e;
   e.p0 = e.p1 = at;

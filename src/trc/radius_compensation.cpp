@@ -53,12 +53,11 @@ NCOFFSET_INLINE_STEP bool RadiusCompensation::checkSameSettings(const MotionBloc
     detail::notModelled("motion along the applicate under CUT2D in a plane a frame tilts");
 }
 
-geom::PlaneMetric RadiusCompensation::planeMetric(const MotionBlock& m, bool& projected) {
-  projected = false;
+// (planeMetric's frame other than the identity.)
+geom::PlaneMetric RadiusCompensation::framedMetric(const MotionBlock& m, bool& projected) {
   // The tool radius is physical: not scaled by SCALE or a scaling settable frame (Mitsubishi
   // M700V PM 13.20, GSK980MDc p58 say so; the Siemens frame components hold no tool data;
   // docs/radius-compensation.md "Frames").
-  if (m.frame.isIdentity()) return {};
   const PlaneAxes pa = planeAxes(m.plane);
   Vec3 ea, eo;
   ea[pa.abscissa] = 1;
@@ -95,7 +94,11 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
     out_.programmed(m);
   // (On first: the state of most blocks of a compensated contour, one test before the call.)
   if (state_ == State::On) {
-    motionOn(m);
+    // (G40 here, not in motionOn: its frame is not set up for the one block a lap, §48.)
+    if (m.trc.mode == TrcMode::Off)
+      retract(m);
+    else
+      motionOn(m);
   } else if (state_ == State::Off) {
     // (Here, not in startSelection: the path of every block without compensation.)
     const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > geom::tol::kPoint;
@@ -142,7 +145,11 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
     return;
   }
   checkSameSettings(m);  // (CUTCONON here: alarm 99010, constantAtSelection)
-  if (!planeMotion(m)) {
+  // planeMotion, with a line's length kept, as in motionOn (§48).
+  const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
+  const PlaneAxes pa = planeAxes(m.plane);
+  const double length = arc ? kUnmeasured : lineLength(m, pa);
+  if (!arc && !(length > geom::tol::kPoint)) {
     waiting_.push_back(m);
     blockWithoutMotion();
     return;
@@ -151,11 +158,16 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
   // The first element starts at the value of the selection block; a new value programmed in it
   // (D, T) is spread over it like in any later block (details Q8).
   const double r0 = std::fabs(selection().trc.radius), r1 = std::fabs(m.trc.radius);
+  const double r_end = std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1;
   // The approach line and the first element are built in the window's first two slots (the
   // first holds the selection block), not as Pieces moved in (docs/performance.md §31, §36).
   window_.pushBack();
   Piece& first = window_[1];
-  compensateInto(first, m, r0, std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1);
+  // (The usual element without compensateInto's call, with the length measured above, §48.)
+  if (r0 == r_end && metric_.identity && !general_paths_)
+    compensateUsual(first, m, r0, 0, false, length, pa);
+  else
+    compensateInto(first, m, r0, r_end);
   if (!first.valid) detail::collision(m.line, settings_.check_blocks);  // no element to approach
   Piece& approach = window_[0];
   approachLine(approach, first);
@@ -207,10 +219,6 @@ void RadiusCompensation::waitOn(const MotionBlock& m) {
 }
 
 void RadiusCompensation::motionOn(const MotionBlock& m) {
-  if (m.trc.mode == TrcMode::Off) {
-    retract(m);
-    return;
-  }
   if (checkSameSettings(m)) return;  // handled by CUTCONON (constant_compensation.cpp)
   // planeMotion, with a line's length kept for its unit vector (compensateConstant, §48).
   const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;

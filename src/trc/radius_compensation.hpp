@@ -142,9 +142,17 @@ class RadiusCompensation final : public core::Stage {
   // A G41/G42 block with plane motion: waits for the first element (W1 2-41).
   void startSelection(const core::MotionBlock& m);
   // The plane's lengths under the block's frame.
-  static geom::PlaneMetric planeMetric(const core::MotionBlock& m, bool& projected);
+  // (The identity inline, once a selection; the rest out of line, §48.)
+  static geom::PlaneMetric planeMetric(const core::MotionBlock& m, bool& projected) {
+    projected = false;
+    if (m.frame.isIdentity()) return {};
+    return framedMetric(m, projected);
+  }
+  [[gnu::noinline]] static geom::PlaneMetric framedMetric(const core::MotionBlock& m,
+                                                          bool& projected);
   void checkProjectable(const core::MotionBlock& m) const;
   void motionSelecting(const core::MotionBlock& m);
+  // A block with compensation active and on (G40: retract).
   void motionOn(const core::MotionBlock& m);
   // The block keeps the selection's plane, frame and G group 22; true when CUTCONON handled it.
   bool checkSameSettings(const core::MotionBlock& m);

@@ -119,4 +119,21 @@ NCOFFSET_INLINE_STEP void RadiusCompensation::emitPiece(const Piece& p) {
   emitWithBlocks(p, tip_at);
 }
 
+// (Inline: retract's, once a lap, §48.)
+NCOFFSET_INLINE_STEP void RadiusCompensation::lineToEnd(core::MotionBlock& b,
+                                                        const core::MotionBlock& m,
+                                                        const geom::Element& e) const {
+  if (!metric_.identity || general_paths_ || m.motion == Motion::G2 || m.motion == Motion::G3) {
+    b = toBlock(m, e);
+    return;
+  }
+  copyBlock(b, m);
+  // toBlock without the geometry in between (§36): of the block only the plane start changes
+  // (`e` ends at the block's own end, and lines stay G0/G1).
+  const PlaneAxes pa = planeAxes(m.plane);
+  b.start[pa.abscissa] = e.p0.a;
+  b.start[pa.ordinate] = e.p0.o;
+  b.tip_at = m.has_tip ? core::kTipBoth : core::kTipNone;
+}
+
 }  // namespace ncoffset::trc
