@@ -102,7 +102,7 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
   } else if (state_ == State::Off) {
     // (Here, not in startSelection: the path of every block without compensation.)
     const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > geom::tol::kPoint;
-    if (!wants || !planeMotion(m))
+    if (!wants || !planeMotion(m)) [[likely]]
       emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
     else
       startSelection(m);
