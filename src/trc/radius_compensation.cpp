@@ -228,7 +228,7 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
   Piece& next = window_.pushBack();
   compensateNext(next, m, ++count_, restart_next_, length, pa);  // (an arc's: kUnmeasured)
   restart_next_ = false;
-  Piece& cur = window_[window_.size() - 2];
+  Piece& cur = window_.before(next);
   if (!joinTangent(cur, next)) connect(cur, next);  // a tangent junction without the call
   // Bottleneck detection closes junctions, never opens one: with none open before it,
   // there is nothing for checkOpen to find.
