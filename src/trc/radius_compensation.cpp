@@ -24,7 +24,7 @@ NCOFFSET_INLINE_STEP bool RadiusCompensation::checkSameSettings(const MotionBloc
   if (!m.frame.sameAs(sel_frame_))
     detail::notModelled("a frame change while compensation is active");
   // G groups 22 and 40 in one comparison (the selection block never has CUTCONON).
-  if (groupBytes(m.trc) != sel_groups_ || rare_) [[unlikely]]
+  if (groupBytes(m.trc) != same_groups_) [[unlikely]]
     return rareSettings(m);
   return false;
 }
@@ -128,7 +128,7 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
   sel_groups_ = groupBytes(m.trc);
   sel_frame_plane_ = m.trc.frame_plane;
   metric_ = planeMetric(m, projected_);
-  rare_ = projected_;
+  setRare(projected_);
   state_ = State::Selecting;
   dummy_blocks_ = 0;
 }

@@ -343,7 +343,12 @@ class RadiusCompensation final : public core::Stage {
   // these coordinates, so that R is kept in the machine (toElement / geometry convert).
   geom::PlaneMetric metric_;
   bool projected_ = false;  // CUT2D in a plane the frame tilts: compensated in its projection
-  bool rare_ = false;       // projected_ or constant_: checkSameSettings takes rareSettings
+  // What checkSameSettings compares groupBytes with: sel_groups_, or with projected_ or
+  // constant_ (rareSettings for every block) kRareGroups, which no block has (two bools): one
+  // comparison for both tests (§48).
+  std::uint16_t same_groups_ = 0;
+  static constexpr std::uint16_t kRareGroups = 0xFFFF;
+  void setRare(bool rare) { same_groups_ = rare ? kRareGroups : sel_groups_; }
   // An element of the window may be open or without equidistant (false: none is, so openWith
   // looks at the new one only). Set by every change of the window but motionOn's and the
   // selection's (bottleneck detection and release close and remove, never open).
