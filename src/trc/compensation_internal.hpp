@@ -28,6 +28,14 @@ inline void keepTipAt(core::MotionBlock& b, std::uint8_t keep) {
   b.tip_at = static_cast<std::uint8_t>(b.tip_at & keep);
 }
 
+// A distance whose square `d2` is below 0.99 kPoint^2 is below kPoint, without the root: the
+// root is correctly rounded and monotone, so sqrt(d2) <= sqrt(0.99) kPoint (within an ulp) there.
+// The tangent junction's test (joinTangent) asks the root only above that (docs/performance.md
+// §48; tests/trc/join_tangent_test.cpp).
+inline bool surelyBelowPoint(double d2) {
+  return d2 < 0.99 * tol::kPoint * tol::kPoint;
+}
+
 // The index of a block that never comes (for checkOpen when the window is flushed).
 inline constexpr long kNoLaterBlock = std::numeric_limits<long>::max() / 2;
 

@@ -29,7 +29,7 @@ bool RadiusCompensation::keepConstant(const MotionBlock& m) {
     // its start point, joined by a straight line (restartLine). (G40 while CUTCONON is active
     // does not come here: the retraction runs from where the tool stands.)
     constant_ = false;
-    rare_ = projected_;
+    setRare(projected_);
     return false;
   }
   if (!planeMotion(m)) {
@@ -52,7 +52,8 @@ void RadiusCompensation::beginConstant() {
   // The window is written with the last element ending on its normal (as before STOPRE).
   flushAll();
   constant_offset_ = last.compensated.p1 - last.programmed.p1;
-  constant_ = rare_ = true;
+  constant_ = true;
+  setRare(true);
   restart_next_ = true;
 }
 

@@ -18,6 +18,9 @@ class PieceWindow {
   const T& operator[](size_t i) const { return slots_[(head_ + i) & mask_]; }
   T& front() { return (*this)[0]; }
   T& back() { return (*this)[size_ - 1]; }
+  // The slot before `slot` (an element of the window but the front): the slot's neighbour in
+  // memory, or the last slot at a wrap, without the index arithmetic of operator[] (§48).
+  T& before(T& slot) { return &slot == slots_.data() ? slots_[capacity_ - 1] : *(&slot - 1); }
   // Whether an element satisfies `pred`, asked in slot order (not in window order): a pointer
   // walk over the one or two runs of slots the window occupies, without the index arithmetic of
   // operator[] (the compensation asks it once a block, docs/performance.md §28).

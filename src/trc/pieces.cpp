@@ -47,20 +47,6 @@ MotionBlock RadiusCompensation::toBlock(const MotionBlock& like, const Element& 
       like, core::planeGeometry(like, metric_.identity ? e : fromMetric(e), tip_at));
 }
 
-void RadiusCompensation::lineToEnd(MotionBlock& b, const MotionBlock& m, const Element& e) const {
-  if (!metric_.identity || general_paths_ || m.motion == Motion::G2 || m.motion == Motion::G3) {
-    b = toBlock(m, e);
-    return;
-  }
-  copyBlock(b, m);
-  // toBlock without the geometry in between (§36): of the block only the plane start changes
-  // (`e` ends at the block's own end, and lines stay G0/G1).
-  const PlaneAxes pa = planeAxes(m.plane);
-  b.start[pa.abscissa] = e.p0.a;
-  b.start[pa.ordinate] = e.p0.o;
-  b.tip_at = m.has_tip ? core::kTipBoth : core::kTipNone;
-}
-
 MotionBlock RadiusCompensation::atPoint(const MotionBlock& like, Vec2 at) const {
   Element e;
   e.p0 = e.p1 = at;
@@ -117,7 +103,7 @@ RadiusCompensation::Piece RadiusCompensation::compensate(const MotionBlock& m, d
 void RadiusCompensation::compensateInto(Piece& p, const MotionBlock& m, double r0, double r1,
                                         long index, bool restart) const {
   if (r0 == r1 && metric_.identity && !general_paths_)  // the usual element (§36)
-    return compensateUsual(p, m, r0, index, restart);
+    return compensateUsual(p, m, r0, index, restart, kUnmeasured, planeAxes(m.plane));
   startPiece(p, r0, r1, index, restart);
   p.programmed = planeElement(m);
   if (!metric_.identity) toMetric(p.programmed);
@@ -152,19 +138,6 @@ Element RadiusCompensation::cornerEquidistant(const Piece& p, bool at_end) const
   double r = at_end ? p.r1 : p.r0;
   auto e = geom::equidistant(p.programmed, p.side * r);
   return e ? *e : p.compensated;
-}
-
-void RadiusCompensation::emitPiece(const Piece& p) {
-  // On the path of S (the approach line starts where P stood): P - S (cutting-edge-positions.md).
-  const std::uint8_t tip_at = !p.block.has_tip ? core::kTipNone
-                              : p.approach     ? core::kTipEnd
-                                               : core::kTipBoth;
-  // The usual piece: nothing inserted before it, no block waiting after it, no scaling frame.
-  // The element itself goes on, no copy of the block nor a geometry built from the two, in a
-  // tail call (docs/performance.md §37).
-  if (p.transition.empty() && p.waiting.empty() && metric_.identity) [[likely]]
-    return out_.element(p.block, p.compensated, tip_at);
-  emitWithBlocks(p, tip_at);
 }
 
 void RadiusCompensation::emitWithBlocks(const Piece& p, std::uint8_t tip_at) {

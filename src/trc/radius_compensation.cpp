@@ -24,7 +24,7 @@ NCOFFSET_INLINE_STEP bool RadiusCompensation::checkSameSettings(const MotionBloc
   if (!m.frame.sameAs(sel_frame_))
     detail::notModelled("a frame change while compensation is active");
   // G groups 22 and 40 in one comparison (the selection block never has CUTCONON).
-  if (groupBytes(m.trc) != sel_groups_ || rare_) [[unlikely]]
+  if (groupBytes(m.trc) != same_groups_) [[unlikely]]
     return rareSettings(m);
   return false;
 }
@@ -53,12 +53,11 @@ NCOFFSET_INLINE_STEP bool RadiusCompensation::checkSameSettings(const MotionBloc
     detail::notModelled("motion along the applicate under CUT2D in a plane a frame tilts");
 }
 
-geom::PlaneMetric RadiusCompensation::planeMetric(const MotionBlock& m, bool& projected) {
-  projected = false;
+// (planeMetric's frame other than the identity.)
+geom::PlaneMetric RadiusCompensation::framedMetric(const MotionBlock& m, bool& projected) {
   // The tool radius is physical: not scaled by SCALE or a scaling settable frame (Mitsubishi
   // M700V PM 13.20, GSK980MDc p58 say so; the Siemens frame components hold no tool data;
   // docs/radius-compensation.md "Frames").
-  if (m.frame.isIdentity()) return {};
   const PlaneAxes pa = planeAxes(m.plane);
   Vec3 ea, eo;
   ea[pa.abscissa] = 1;
@@ -95,11 +94,15 @@ core::Feedback RadiusCompensation::motion(const MotionBlock& m) {
     out_.programmed(m);
   // (On first: the state of most blocks of a compensated contour, one test before the call.)
   if (state_ == State::On) {
-    motionOn(m);
+    // (G40 here, not in motionOn: its frame is not set up for the one block a lap, §48.)
+    if (m.trc.mode == TrcMode::Off)
+      retract(m);
+    else
+      motionOn(m);
   } else if (state_ == State::Off) {
     // (Here, not in startSelection: the path of every block without compensation.)
     const bool wants = m.trc.mode != TrcMode::Off && std::fabs(m.trc.radius) > geom::tol::kPoint;
-    if (!wants || !planeMotion(m))
+    if (!wants || !planeMotion(m)) [[likely]]
       emit(m);  // no compensation, or no plane axis in the block: no selection yet (W1 2-41)
     else
       startSelection(m);
@@ -125,7 +128,7 @@ void RadiusCompensation::startSelection(const MotionBlock& m) {
   sel_groups_ = groupBytes(m.trc);
   sel_frame_plane_ = m.trc.frame_plane;
   metric_ = planeMetric(m, projected_);
-  rare_ = projected_;
+  setRare(projected_);
   state_ = State::Selecting;
   dummy_blocks_ = 0;
 }
@@ -142,7 +145,11 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
     return;
   }
   checkSameSettings(m);  // (CUTCONON here: alarm 99010, constantAtSelection)
-  if (!planeMotion(m)) {
+  // planeMotion, with a line's length kept, as in motionOn (§48).
+  const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
+  const PlaneAxes pa = planeAxes(m.plane);
+  const double length = arc ? kUnmeasured : lineLength(m, pa);
+  if (!arc && !(length > geom::tol::kPoint)) {
     waiting_.push_back(m);
     blockWithoutMotion();
     return;
@@ -151,11 +158,16 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
   // The first element starts at the value of the selection block; a new value programmed in it
   // (D, T) is spread over it like in any later block (details Q8).
   const double r0 = std::fabs(selection().trc.radius), r1 = std::fabs(m.trc.radius);
+  const double r_end = std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1;
   // The approach line and the first element are built in the window's first two slots (the
   // first holds the selection block), not as Pieces moved in (docs/performance.md §31, §36).
   window_.pushBack();
   Piece& first = window_[1];
-  compensateInto(first, m, r0, std::fabs(r1 - r0) <= geom::tol::kPoint ? r0 : r1);
+  // (The usual element without compensateInto's call, with the length measured above, §48.)
+  if (r0 == r_end && metric_.identity && !general_paths_)
+    compensateUsual(first, m, r0, 0, false, length, pa);
+  else
+    compensateInto(first, m, r0, r_end);
   if (!first.valid) detail::collision(m.line, settings_.check_blocks);  // no element to approach
   Piece& approach = window_[0];
   approachLine(approach, first);
@@ -171,7 +183,16 @@ void RadiusCompensation::motionSelecting(const MotionBlock& m) {
 
 // (Here, inlined into motionOn, its one caller: once a block, docs/performance.md §36.)
 NCOFFSET_INLINE_STEP void RadiusCompensation::compensateNext(Piece& p, const MotionBlock& m,
-                                                             long index, bool restart) {
+                                                             long index, bool restart,
+                                                             double length, PlaneAxes pa) {
+  // The usual block: the value and G41/G42 of the last one. The general path below gives the
+  // same value at both ends, fabs(radius), and the same side (sideOf reads just these two), so
+  // only the settings are kept (§48).
+  if (m.trc.radius == settings_.radius && m.trc.mode == settings_.mode && metric_.identity &&
+      !general_paths_) {
+    settings_ = m.trc;
+    return compensateUsual(p, m, std::fabs(settings_.radius), index, restart, length, pa);
+  }
   const double old_side = side(), old_r = std::fabs(settings_.radius);
   const double new_r = std::fabs(m.trc.radius);
   setSettings(m.trc);
@@ -183,30 +204,31 @@ NCOFFSET_INLINE_STEP void RadiusCompensation::compensateNext(Piece& p, const Mot
   if (new_side) r0 = r1 = new_r;
   // The usual element built here, without a call (§42).
   if (r0 == r1 && metric_.identity && !general_paths_)
-    compensateUsual(p, m, r0, index, restart || new_side);
+    compensateUsual(p, m, r0, index, restart || new_side, length, pa);
   else
     compensateInto(p, m, r0, r1, index, restart || new_side);
 }
 
+void RadiusCompensation::waitOn(const MotionBlock& m) {
+  if (window_.back().emitted)  // after STOPRE: runs where the last element ended
+    emit(atPoint(m, window_.back().compensated.p1));
+  else
+    window_.back().waiting.push_back(m);
+  settings_.max_dummy_blocks = m.trc.max_dummy_blocks;
+  blockWithoutMotion();
+}
+
 void RadiusCompensation::motionOn(const MotionBlock& m) {
-  if (m.trc.mode == TrcMode::Off) {
-    retract(m);
-    return;
-  }
   if (checkSameSettings(m)) return;  // handled by CUTCONON (constant_compensation.cpp)
-  if (!planeMotion(m)) {
-    if (window_.back().emitted)  // after STOPRE: runs where the last element ended
-      emit(atPoint(m, window_.back().compensated.p1));
-    else
-      window_.back().waiting.push_back(m);
-    settings_.max_dummy_blocks = m.trc.max_dummy_blocks;
-    blockWithoutMotion();
-    return;
-  }
+  // planeMotion, with a line's length kept for its unit vector (compensateConstant, §48).
+  const bool arc = m.motion == Motion::G2 || m.motion == Motion::G3;
+  const PlaneAxes pa = planeAxes(m.plane);
+  const double length = arc ? kUnmeasured : lineLength(m, pa);
+  if (!arc && !(length > geom::tol::kPoint)) return waitOn(m);
   Piece& next = window_.pushBack();
-  compensateNext(next, m, ++count_, restart_next_);
+  compensateNext(next, m, ++count_, restart_next_, length, pa);  // (an arc's: kUnmeasured)
   restart_next_ = false;
-  Piece& cur = window_[window_.size() - 2];
+  Piece& cur = window_.before(next);
   if (!joinTangent(cur, next)) connect(cur, next);  // a tangent junction without the call
   // Bottleneck detection closes junctions, never opens one: with none open before it,
   // there is nothing for checkOpen to find.
@@ -219,10 +241,12 @@ void RadiusCompensation::motionOn(const MotionBlock& m) {
   dummy_blocks_ = 0;
 }
 
-void RadiusCompensation::release() {
+NCOFFSET_INLINE_STEP void RadiusCompensation::release() {
   const long reach = count_ + 1 - settings_.check_blocks;
-  while (window_.size() > 1 && window_.front().index < reach) {
-    if (!window_.front().emitted) emitPiece(window_.front());
+  while (window_.size() > 1) {
+    const Piece& f = window_.front();
+    if (f.index >= reach) break;
+    if (!f.emitted) emitPiece(f);
     window_.popFront();
   }
 }

@@ -32,6 +32,14 @@
 
 namespace ncoffset::trc {
 
+// v's coordinates in the plane of axes `pa`: G17's read straight, the others through Vec3's
+// index, whose two tests a read keeps when GCC does not know the index (the same values;
+// docs/performance.md §48).
+[[gnu::always_inline]] inline geom::Vec2 planePoint(const Vec3& v, PlaneAxes pa) {
+  if (pa.abscissa == 0 && pa.ordinate == 1) return {v.x, v.y};
+  return {v[pa.abscissa], v[pa.ordinate]};
+}
+
 class RadiusCompensation final : public core::Stage {
  public:
   explicit RadiusCompensation(core::Stage& out) : out_(out) {}
@@ -134,9 +142,17 @@ class RadiusCompensation final : public core::Stage {
   // A G41/G42 block with plane motion: waits for the first element (W1 2-41).
   void startSelection(const core::MotionBlock& m);
   // The plane's lengths under the block's frame.
-  static geom::PlaneMetric planeMetric(const core::MotionBlock& m, bool& projected);
+  // (The identity inline, once a selection; the rest out of line, §48.)
+  static geom::PlaneMetric planeMetric(const core::MotionBlock& m, bool& projected) {
+    projected = false;
+    if (m.frame.isIdentity()) return {};
+    return framedMetric(m, projected);
+  }
+  [[gnu::noinline]] static geom::PlaneMetric framedMetric(const core::MotionBlock& m,
+                                                          bool& projected);
   void checkProjectable(const core::MotionBlock& m) const;
   void motionSelecting(const core::MotionBlock& m);
+  // A block with compensation active and on (G40: retract).
   void motionOn(const core::MotionBlock& m);
   // The block keeps the selection's plane, frame and G group 22; true when CUTCONON handled it.
   bool checkSameSettings(const core::MotionBlock& m);
@@ -159,11 +175,14 @@ class RadiusCompensation final : public core::Stage {
   // The block moves in the plane. (Inline: asked for every block.)
   static bool planeMotion(const core::MotionBlock& m) {
     if (m.motion == Motion::G2 || m.motion == Motion::G3) return true;
-    // The plane part of the block: toElement(m).p1 - p0, without building the element.
-    const PlaneAxes pa = planeAxes(m.plane);
-    const geom::Vec2 d{m.end[pa.abscissa] - m.start[pa.abscissa],
-                       m.end[pa.ordinate] - m.start[pa.ordinate]};
-    return geom::length(d) > geom::tol::kPoint;  // a shorter motion is none
+    return lineLength(m, planeAxes(m.plane)) > geom::tol::kPoint;  // a shorter motion is none
+  }
+  // The plane length of a line block: toElement(m).p1 - p0, without building the element.
+  // (motionOn keeps it for the line's unit vector, compensateConstant: one root, §48.)
+  // (The plane's axes from the caller: motionOn asks planeAxes once, which GCC does not inline
+  // into it a second time.)
+  static double lineLength(const core::MotionBlock& m, PlaneAxes pa) {
+    return geom::length(planePoint(m.end, pa) - planePoint(m.start, pa));
   }
 
   // --- The window's elements (pieces.cpp): blocks as plane elements and their equidistants.
@@ -191,17 +210,24 @@ class RadiusCompensation final : public core::Stage {
   // compensateInto's steps: the slot's fields but the geometry; the geometry of the usual element
   // (one value, no scaling frame), the fast twin of compensateInto's general path.
   void startPiece(Piece& p, double r0, double r1, long index, bool restart) const;
-  void compensateConstant(Piece& p, const core::MotionBlock& m, double r) const;
+  // (`length`: a line's lineLength when measured, else kUnmeasured; `pa`: planeAxes(m.plane).)
+  void compensateConstant(Piece& p, const core::MotionBlock& m, double r, double length,
+                          PlaneAxes pa) const;
+  static constexpr double kUnmeasured = 0;
   // The usual element whole (usual_element.hpp): compensateInto's fast path, inline.
-  void compensateUsual(Piece& p, const core::MotionBlock& m, double r, long index,
-                       bool restart) const;
+  void compensateUsual(Piece& p, const core::MotionBlock& m, double r, long index, bool restart,
+                       double length, PlaneAxes pa) const;
   // The equidistant at the constant value the corner calculation uses (details Q8: the end
   // value of the first element, the start value of the second).
   geom::Element cornerEquidistant(const Piece& p, bool at_end) const;
   // The next element with its compensation value (a change spreads over the block, Q8) and
   // side (a change of side starts anew at the block's start, like a selection).
   // (`restart`: the element starts anew in any case, after STOPRE.)
-  void compensateNext(Piece& p, const core::MotionBlock& m, long index, bool restart);
+  // (`length`, `pa`: as compensateUsual's.)
+  void compensateNext(Piece& p, const core::MotionBlock& m, long index, bool restart, double length,
+                      PlaneAxes pa);
+  // motionOn for a block without plane motion (out of line: its block on the stack).
+  [[gnu::noinline]] void waitOn(const core::MotionBlock& m);
 
   // --- Corners (corners.cpp, W1 2.4.3, 2.4.5, details Q3/Q4).
   // Joins `next` to the last element of the window (corner).
@@ -209,9 +235,13 @@ class RadiusCompensation final : public core::Stage {
   // connect's first outcome, inline for motionOn (the common case of CAM contours, §31): both
   // elements valid, no change of side, and the equidistants meet, so `next` starts where `cur`
   // ends and nothing is inserted. False: connect decides.
+  // (The distance's root only when its square is not surely below kPoint^2, and with the
+  // general paths, the twin: §48.)
   static bool joinTangent(const Piece& cur, Piece& next) {
-    if (!cur.valid || !next.valid || next.restart ||
-        geom::length(cur.compensated.p1 - next.compensated.p0) >= geom::tol::kPoint)
+    if (!cur.valid || !next.valid || next.restart) return false;
+    const geom::Vec2 d = cur.compensated.p1 - next.compensated.p0;
+    const double d2 = d.a * d.a + d.o * d.o;  // (geom::length's sum)
+    if ((general_paths_ || !detail::surelyBelowPoint(d2)) && std::sqrt(d2) >= geom::tol::kPoint)
       return false;
     next.compensated.p0 = cur.compensated.p1;
     return true;
@@ -313,7 +343,12 @@ class RadiusCompensation final : public core::Stage {
   // these coordinates, so that R is kept in the machine (toElement / geometry convert).
   geom::PlaneMetric metric_;
   bool projected_ = false;  // CUT2D in a plane the frame tilts: compensated in its projection
-  bool rare_ = false;       // projected_ or constant_: checkSameSettings takes rareSettings
+  // What checkSameSettings compares groupBytes with: sel_groups_, or with projected_ or
+  // constant_ (rareSettings for every block) kRareGroups, which no block has (two bools): one
+  // comparison for both tests (§48).
+  std::uint16_t same_groups_ = 0;
+  static constexpr std::uint16_t kRareGroups = 0xFFFF;
+  void setRare(bool rare) { same_groups_ = rare ? kRareGroups : sel_groups_; }
   // An element of the window may be open or without equidistant (false: none is, so openWith
   // looks at the new one only). Set by every change of the window but motionOn's and the
   // selection's (bottleneck detection and release close and remove, never open).
