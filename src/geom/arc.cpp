@@ -47,6 +47,17 @@ void chordAlarm(double chord, double diameter) {
                     chord, diameter));
 }
 
+void startIsCentreAlarm() {
+  raise(AlarmNumber::CircleProgramming, "circle programming error: start point is the centre");
+}
+
+void endRadiusAlarm(double start_radius, double end_radius, double tol) {
+  raise(AlarmNumber::CircleEndPoint,
+        fmt::format("error in end point of circle: start radius {:.6g}, end radius {:.6g}, "
+                    "difference {:.6g} > {:.6g} (MD21000/MD21010)",
+                    start_radius, end_radius, std::fabs(end_radius - start_radius), tol));
+}
+
 ArcSolution arcByRadius(Vec2 start, Vec2 end, double cr, bool ccw, double tol_const,
                         double tol_factor) {
   ArcSolution s;
@@ -72,8 +83,7 @@ ArcSolution solveArc(const ArcRequest& r) {
   if (r.centre) {
     s.centre = *r.centre;
     s.radius = dist(r.start, s.centre);
-    if (s.radius < 1e-9)
-      raise(AlarmNumber::CircleProgramming, "circle programming error: start point is the centre");
+    if (s.radius < 1e-9) startIsCentreAlarm();
     if (r.ar) {
       double ang = std::atan2(r.start.o - s.centre.o, r.start.a - s.centre.a) +
                    (r.ccw ? 1 : -1) * *r.ar * kDeg;
@@ -81,13 +91,10 @@ ArcSolution solveArc(const ArcRequest& r) {
       return s;
     }
     s.end = r.end ? *r.end : r.start;
+    // radiusByCentre is the motion builder's inline twin of these lines (tests/geom/arc_test.cpp).
     double r2 = dist(s.end, s.centre);
     double tol = maxOf(r.tol_const, r.tol_factor * s.radius);
-    if (std::fabs(r2 - s.radius) > tol)
-      raise(AlarmNumber::CircleEndPoint,
-            fmt::format("error in end point of circle: start radius {:.6g}, end radius {:.6g}, "
-                        "difference {:.6g} > {:.6g} (MD21000/MD21010)",
-                        s.radius, r2, std::fabs(r2 - s.radius), tol));
+    if (std::fabs(r2 - s.radius) > tol) endRadiusAlarm(s.radius, r2, tol);
     return s;
   }
   if (!r.end) raise(AlarmNumber::CircleProgramming, "circle programming error: end point missing");

@@ -41,6 +41,9 @@ inline double maxOf(double a, double b) {
 [[noreturn, gnu::cold]] void fullCircleAlarm();
 [[noreturn, gnu::cold]] void radiusZeroAlarm();
 [[noreturn, gnu::cold]] void chordAlarm(double chord, double diameter);
+// The alarms of a circle by its centre.
+[[noreturn, gnu::cold]] void startIsCentreAlarm();
+[[noreturn, gnu::cold]] void endRadiusAlarm(double start_radius, double end_radius, double tol);
 
 // The centre of a circle by its radius CR= (negative: more than a semicircle) from `start` to
 // `end`, with its alarms in solveArc's order; inline, so that the motion builder's short way
@@ -63,6 +66,22 @@ inline double maxOf(double a, double b) {
   const double side = (ccw == (cr > 0)) ? 1 : -1;  // CR>0: arc up to 180 degrees
   const double h = std::sqrt(maxOf(0.0, rad * rad - d * d / 4));
   return {mid_a + h * (side * left_a), mid_o + h * (side * left_o)};
+}
+
+// The radius of a circle by its centre from `start` to `end` (the end on the circle within
+// MD21000/MD21010), with its alarms in solveArc's order; inline for the motion builder's short
+// way as centreByRadius.
+[[gnu::always_inline]] inline double radiusByCentre(Vec2 start, Vec2 end, Vec2 centre,
+                                                    double tol_const, double tol_factor) {
+  // Coordinates stay within 1e9 mm (block_executor): the squares cannot overflow, no hypot.
+  const double sa = centre.a - start.a, so = centre.o - start.o;
+  const double radius = std::sqrt(sa * sa + so * so);
+  if (radius < 1e-9) startIsCentreAlarm();
+  const double ea = centre.a - end.a, eo = centre.o - end.o;
+  const double r2 = std::sqrt(ea * ea + eo * eo);
+  const double tol = maxOf(tol_const, tol_factor * radius);
+  if (std::fabs(r2 - radius) > tol) endRadiusAlarm(radius, r2, tol);
+  return radius;
 }
 
 // solveArc for a circle by its radius CR= from `start` to `end`: what solveArc does with a

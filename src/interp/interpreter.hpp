@@ -153,8 +153,9 @@ class Interpreter final : public lang::Environment {
   bool plainWord(std::string_view name, double value, bool is_int, Motion& motion,
                  core::TrcMode& trc);
   bool plainAxis(int i, double value);
-  bool plainFeed(double value);    // F: false beyond 0..1e9 (collectWord's alarm)
-  bool plainRadius(double value);  // CR=: false a second time or with a variable CR
+  bool plainFeed(double value);           // F: false beyond 0..1e9 (collectWord's alarm)
+  bool plainRadius(double value);         // CR=: false a second time or with a variable CR
+  bool plainCentre(int i, double value);  // I, J, K (i 0..2): false a second time
   bool plainG(double value, bool is_int, Motion& motion, core::TrcMode& trc);
   bool plainGCode(unsigned long long g, Motion& motion, core::TrcMode& trc);
   void executePlainBlock(const lang::Block& b);

@@ -2,6 +2,8 @@
 // from one block before it is executed.
 #pragma once
 
+#include <cstddef>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,6 +66,9 @@ struct ModalState {
 // for the G codes, PM-NC "Block structure").
 struct BlockWords {
   bool axis[3] = {false, false, false};
+  // A circle word (I, J, K, CR=) that Interpreter::plainWord collected: finishPlainBlock's one
+  // test for them (only its blocks, whose words plainWord collected alone, read it).
+  bool plain_circle = false;
   double axis_value[3] = {0, 0, 0};
   lang::AxisMode axis_mode[3] = {lang::AxisMode::Default, lang::AxisMode::Default,
                                  lang::AxisMode::Default};
@@ -97,28 +102,36 @@ struct BlockWords {
   int column = 0;
 
   void clear();
-  // clear() for words that Interpreter::plainWord alone set (X, Y, Z, G0..G3, F, CR=): only
-  // those fields differ from an empty instance, so resetting them is the same as clear().
+  // clear() for words that Interpreter::plainWord alone set (X, Y, Z, G0..G3, F, CR=, I, J,
+  // K): only those fields differ from an empty instance, so resetting them is the same as
+  // clear() (plainWord's axis_mode and centre_mode are the empty instance's).
   void clearPlain() {
-    axis[0] = axis[1] = axis[2] = false;
-    axis_value[0] = axis_value[1] = axis_value[2] = 0;
+    // axis .. centre_value at once (four 16-byte stores): plainWord's axis_mode and centre_mode
+    // are the empty instance's, AxisMode::Default, 0.
+    static_assert(offsetof(BlockWords, axis) == 0 && offsetof(BlockWords, centre_mode) == 64 &&
+                  static_cast<int>(lang::AxisMode::Default) == 0);
+    std::memset(static_cast<void*>(this), 0, offsetof(BlockWords, centre_mode));
     // Assigned, not reset(): reset() tests the flag first (two instructions more a line).
     cr = std::optional<double>();
     motion_word = false;
     f = std::optional<double>();
   }
   // clear() for every field but plainWord's, which keep their values: the plain line collected
-  // them after a block of other words (interp/plain_line.cpp). plainWord's axis_mode is the
-  // empty instance's.
+  // them after a block of other words (interp/plain_line.cpp). plainWord's axis_mode and
+  // centre_mode are the empty instance's.
   void clearExceptPlain() {
-    const bool a[3] = {axis[0], axis[1], axis[2]};
+    const bool a[3] = {axis[0], axis[1], axis[2]}, c[3] = {centre[0], centre[1], centre[2]};
     const double v[3] = {axis_value[0], axis_value[1], axis_value[2]};
+    const double cv[3] = {centre_value[0], centre_value[1], centre_value[2]};
     const std::optional<double> kept_cr = cr, kept_f = f;
-    const bool kept_motion = motion_word;
+    const bool kept_motion = motion_word, kept_circle = plain_circle;
     clear();
+    plain_circle = kept_circle;
     for (int i = 0; i < 3; ++i) {
       axis[i] = a[i];
       axis_value[i] = v[i];
+      centre[i] = c[i];
+      centre_value[i] = cv[i];
     }
     cr = kept_cr;
     f = kept_f;

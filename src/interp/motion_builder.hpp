@@ -103,6 +103,8 @@ class MotionBuilder {
   [[gnu::noinline]] Vec3 generalArc(const BlockWords& w, const ModalState& modal, Vec3 to);
   // arc() for a circle by CR= alone (no centre, AR=) whose end point is programmed (buildPlain).
   void radiusArc(const BlockWords& w, const ModalState& modal, const Vec3& target);
+  // arc() for a circle by its centre alone (I, J, K from the start, no CR=, AR=) (buildPlain).
+  void centreArc(const BlockWords& w, const ModalState& modal, const Vec3& target);
   // G0/G1: the tool length taken up by each axis the block moves (W1 2.1, spec §2.6). False
   // when the block moves nowhere.
   // A thread or tapping line (threads.cpp): its feed is the lead; G63 names the block's G1.

@@ -1,7 +1,7 @@
-// The motion builder's short way (docs/performance.md §35): a block of plain words (X, Y, Z,
-// G0..G3, F, CR= alone, as Interpreter::plainWord collects them) under the interpreter's modal
-// state, without a frame or with the frame of the last motion unchanged and no thread motion, is
-// built here without the steps its words cannot need (frame suppression, AC/IC/DC words, SAR,
+// The motion builder's short way (docs/performance.md §35, §53): a block of plain words (X, Y, Z,
+// G0..G3, F, CR=, I, J, K alone, as Interpreter::plainWord collects them) under the interpreter's
+// modal state, without a frame or with the frame of the last motion unchanged and no thread motion,
+// is built here without the steps its words cannot need (frame suppression, AC/IC/DC words, SAR,
 // G63, frame products). The compensation settings, the tool tip and the tool length vector stay
 // in the reused block while only plain lines run (settingsMayChange); of the compensation
 // settings only the mode (G40/G41/G42, plain words) is written for every block.
@@ -110,6 +110,40 @@ void MotionBuilder::targetAlarm(double value, int axis) {
   m_.turns = w.turn.value_or(0);
 }
 
+// arc() for a circle by its centre: I, J, K of the plane's axes from the start point (none
+// written =AC(..)), no CR=, AR=. The end point is the target as buildPlain wrote it (arc's
+// request takes the programmed end, or the start's where no plane axis is programmed, which is
+// what the target holds there: a full circle), so only the centre, the applicate and the turns
+// change the block. The centre is computed as arc() computes it (the start plus I, J, K in mm,
+// bit for bit) and checked by geom::radiusByCentre, solveArc's twin.
+[[gnu::noinline]] void MotionBuilder::centreArc(const BlockWords& w, const ModalState& modal,
+                                                const Vec3& target) {
+  const double tol_const = data_.get(md_circle_const_), tol_factor = data_.get(md_circle_factor_);
+  const Vec3& f = wcs_;
+  auto offset = [&](int ax) { return w.centre[ax] ? toMm(modal, w.centre_value[ax]) : 0; };
+  auto centre = [&](double sa, double so, double ea, double eo, int a, int o)
+      __attribute__((always_inline)) {
+    const geom::Vec2 c{sa + offset(a), so + offset(o)};
+    geom::radiusByCentre({sa, so}, {ea, eo}, c, tol_const, tol_factor);
+    return c;
+  };
+  Vec3& c = m_.centre;
+  if (modal.plane == Plane::G18) {  // Z X
+    const geom::Vec2 k = centre(f.z, f.x, target.z, target.x, 2, 0);
+    c = {k.o, f.y, k.a};
+    m_.applicate = 1;
+  } else if (modal.plane == Plane::G19) {  // Y Z
+    const geom::Vec2 k = centre(f.y, f.z, target.y, target.z, 1, 2);
+    c = {f.x, k.a, k.o};
+    m_.applicate = 0;
+  } else {  // G17: X Y
+    const geom::Vec2 k = centre(f.x, f.y, target.x, target.y, 0, 1);
+    c = {k.a, k.o, f.z};
+    m_.applicate = 2;
+  }
+  m_.turns = w.turn.value_or(0);
+}
+
 Vec3 MotionBuilder::generalArc(const BlockWords& w, const ModalState& modal, Vec3 to) {
   arc(w, modal, wcs_, true, to);
   return to;
@@ -141,12 +175,22 @@ bool MotionBuilder::buildPlain(const BlockWords& w, const ModalState& modal, int
   // checkRange: the end point, and a circle's centre (rangeAlarm names the first beyond).
   if (m.motion == Motion::G2 || m.motion == Motion::G3) {
     // CR= with the end point in the plane and nothing else: solveArc's request is that alone.
+    // A circle by its centre: I, J, K of the plane alone, none =AC(..) (arc()'s alarm for the
+    // applicate's and its absolute centre stay there).
     const PlaneAxes pa = planeAxes(modal.plane);
-    if (w.cr && !w.ar && !(w.centre[0] || w.centre[1] || w.centre[2]) &&
-        (w.axis[pa.abscissa] || w.axis[pa.ordinate]))
-      radiusArc(w, modal, to);
-    else
+    const bool centre = w.centre[0] || w.centre[1] || w.centre[2];
+    if (w.cr) {
+      if (!w.ar && !centre && (w.axis[pa.abscissa] || w.axis[pa.ordinate]))
+        radiusArc(w, modal, to);
+      else
+        to = generalArc(w, modal, to);
+    } else if (centre && !w.ar && !w.centre[pa.applicate] &&
+               w.centre_mode[pa.abscissa] != lang::AxisMode::AC &&
+               w.centre_mode[pa.ordinate] != lang::AxisMode::AC) {
+      centreArc(w, modal, to);
+    } else {
       to = generalArc(w, modal, to);
+    }
     if (outOfRange(m.end + applied_offset_) || outOfRange(m.centre)) [[unlikely]]
       rangeAlarm(true);
   } else {

@@ -1,7 +1,7 @@
 // The per-block fast paths of the interpreter for the blocks CAM systems write (docs/performance.md
-// sections 25, 27 and 30): plain blocks (Parser::simpleWords) collected without looking at
-// statement kinds, and plain lines of X, Y, Z, G0..G3, F and CR= words collected as they are
-// scanned, with no statement at all; the usual plain line is even read by its word scan, which
+// sections 25, 27, 30 and 53): plain blocks (Parser::simpleWords) collected without looking at
+// statement kinds, and plain lines of X, Y, Z, G0..G3, F, CR=, I, J and K words collected as they
+// are scanned, with no statement at all; the usual plain line is even read by its word scan, which
 // finds the line's end itself (lineInPlace, section 44). Each hands whatever it does not know to
 // the general path; tests/interp/fast_path_test.cpp compares them with it.
 
@@ -19,16 +19,17 @@
 
 namespace ncoffset::interp {
 
-// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, G40..G42, F and CR=,
-// as letterWord, gCode and extendedWord collect them, without the call; a G word sets `motion`
-// or `trc` (G group 7, as gCompensation does). False: collectWord takes the word (and raises
-// any alarm).
+// The commonest words of plain blocks collected inline: X, Y, Z, G0..G3, G40..G42, F, CR= and
+// I, J, K (a circle's centre), as letterWord, gCode and extendedWord collect them, without the
+// call; a G word sets `motion` or `trc` (G group 7, as gCompensation does). False: collectWord
+// takes the word (and raises any alarm).
 NCOFFSET_INLINE_STEP bool Interpreter::plainWord(std::string_view name, double value, bool is_int,
                                                  Motion& motion, core::TrcMode& trc) {
   if (name.size() != 1) return name == "CR" && plainRadius(value);
   const char c = name[0];
   if (c >= 'X' && c <= 'Z') return plainAxis(c - 'X', value);
   if (c == 'G') return plainG(value, is_int, motion, trc);
+  if (c >= 'I' && c <= 'K') return plainCentre(c - 'I', value);
   return c == 'F' && plainFeed(value);
 }
 
@@ -44,6 +45,19 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainFeed(double value) {
 NCOFFSET_INLINE_STEP bool Interpreter::plainRadius(double value) {
   if (words_.cr || vars_.find("CR")) return false;
   words_.cr = value;
+  words_.plain_circle = true;
+  return true;
+}
+
+// I, J or K (0..2) of plainWord, the circle's centre from the start point (or a thread's lead,
+// which finishPlainBlock leaves to threadLeadWords as finishBlock does); false if programmed
+// before (collectWord's alarm).
+NCOFFSET_INLINE_STEP bool Interpreter::plainCentre(int i, double value) {
+  if (words_.centre[i]) return false;
+  words_.centre[i] = true;
+  words_.centre_value[i] = value;
+  words_.centre_mode[i] = lang::AxisMode::Default;
+  words_.plain_circle = true;
   return true;
 }
 
@@ -90,19 +104,21 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainGCode(unsigned long long g, Motion& 
 }
 
 // finishBlock (block_executor.cpp) for a block whose words plainWord collected alone (X, Y, Z,
-// G0..G3, F, CR=), outside a contour definition, a carrier change and a modal call (executeBlock):
-// every word the other steps look for is absent, so the feed, the motion and the bookkeeping
-// remain, in finishBlock's order. finishBlock is its twin (tests/interp/fast_path_test.cpp).
+// G0..G3, F, CR=, I, J, K), outside a contour definition, a carrier change and a modal call
+// (executeBlock): every word the other steps look for is absent, so the feed, the motion and the
+// bookkeeping remain, in finishBlock's order. finishBlock is its twin
+// (tests/interp/fast_path_test.cpp).
 NCOFFSET_INLINE_STEP void Interpreter::finishPlainBlock(int column) {
   column_ = column;  // of the block's first word
   feed_before_ = modal_.feed;
   if (words_.f) modal_.feed = modal_.units == Units::G700 ? *words_.f * 25.4 : *words_.f;
   if (events_) blockEvents(feed_before_);
   const bool is_arc = modal_.motion == Motion::G2 || modal_.motion == Motion::G3;
-  if (words_.cr && !is_arc) [[unlikely]]
-    threadLeadWords();  // CR= without G2/G3: the circle alarm
+  const bool circle_words = words_.plain_circle;  // I, J, K, CR=
+  if (circle_words && !is_arc) [[unlikely]]
+    threadLeadWords();  // I, J, K of a thread; else (and CR=) the circle alarm
   bool moved = false;
-  if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && words_.cr))
+  if (words_.axis[0] || words_.axis[1] || words_.axis[2] || (is_arc && circle_words))
     moved = motion_.buildPlain(words_, modal_, line_, file_, feed_before_, motion_before_);
   if (moved) without_motion_ = 0;
   if (events_ && stop_after_) stopEvent();
@@ -148,8 +164,8 @@ NCOFFSET_INLINE_STEP bool scanLineNumber(const char*& p, double& value, bool& is
 }  // namespace
 
 // One word of a plain line at `p` (no blank before it), scanned and collected as plainWord
-// collects it: X, Y, Z, G or F with a number, or CR= with a number; `p` is moved behind the
-// blanks after it. Stricter than Parser::simpleWords: what follows a number directly must be
+// collects it: X, Y, Z, G, F, I, J or K with a number, or CR= with a number; `p` is moved behind
+// the blanks after it. Stricter than Parser::simpleWords: what follows a number directly must be
 // the next word's letter, which the next call checks (so "1EX3", "X1=2" and "X1;" fail there);
 // CR=10 must be followed by a blank or the end, as simpleWords requires.
 NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& motion,
@@ -170,6 +186,9 @@ NCOFFSET_INLINE_STEP bool Interpreter::plainLineWord(const char*& p, Motion& mot
   } else if (c == 'F') {
     ++p;
     if (!scanLineNumber(p, value, is_int) || !plainFeed(value)) return false;
+  } else if (c >= 'I' && c <= 'K') {
+    ++p;
+    if (!scanLineNumber(p, value, is_int) || !plainCentre(c - 'I', value)) return false;
   } else if (c == 'C' && p[1] == 'R' && p[2] == '=') {
     p += 3;
     if (!scanLineNumber(p, value, is_int)) return false;
@@ -211,7 +230,7 @@ NCOFFSET_INLINE_STEP const char* Interpreter::plainWords(const char* base, AtEnd
     if (at_end(p)) return nullptr;  // an empty line or a block number alone
   }
   plain_column_ = static_cast<int>(p - base) + 1;
-  // Only plainWord's fields now (9 stores): executeBlock clears the rest if the line is not
+  // Only plainWord's fields now (seven stores): executeBlock clears the rest if the line is not
   // plain after all, takePlainLine if it is.
   words_.clearPlain();
   motion = modal_.motion;
@@ -414,8 +433,8 @@ void Interpreter::run(LoadedProgram& program, bool init_file) {
         }
         continue;
       }
-      // X Y Z G0..G3 G40..G42 F CR= alone: no parse. Behind the line a newline, or the '\0' of
-      // an expansion, may be read (`ended`).
+      // X Y Z G0..G3 G40..G42 F CR= I J K alone: no parse. Behind the line a newline, or the '\0'
+      // of an expansion, may be read (`ended`).
       bool ended = lvl.pos.offset - line_pos_.offset > text.size();
       if (!macros_.empty() && macros_.expand(text, expanded_, max_len)) [[unlikely]] {
         text = expanded_;

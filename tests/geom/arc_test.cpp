@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "ncoffset/alarm.hpp"
+#include "ncoffset/geometry.hpp"
 
 namespace ncoffset::geom {
 namespace {
@@ -298,6 +299,49 @@ TEST(SolveArc, CentreByRadiusAsBefore) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(got.a), std::bit_cast<std::uint64_t>(want.a)) << i;
     EXPECT_EQ(std::bit_cast<std::uint64_t>(got.o), std::bit_cast<std::uint64_t>(want.o)) << i;
   }
+}
+
+// radiusByCentre (the motion builder's short way for I, J, K) against solveArc with a centre and
+// an end point: the same radius bit for bit, and the same alarm (14045 start point on the centre,
+// 14040 end point off the circle beyond MD21000/MD21010) where solveArc raises one.
+TEST(SolveArc, RadiusByCentreAsSolveArc) {
+  std::uint64_t state = 2212;
+  auto next = [&state](int n) {  // 0 .. n-1
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
+  };
+  auto coordinate = [&next] { return next(4) == 0 ? 0.0 : (next(200001) - 100000) / 1000.0; };
+  int alarms = 0;
+  for (int i = 0; i < 20000; ++i) {
+    ArcRequest r = request({coordinate(), coordinate()}, next(2) != 0);
+    const Vec2 c = next(8) == 0 ? r.start : Vec2{coordinate(), coordinate()};
+    const double rad =
+        std::sqrt((c.a - r.start.a) * (c.a - r.start.a) + (c.o - r.start.o) * (c.o - r.start.o));
+    // An end on the circle to 4 decimals, off it by up to 0.03 mm, or anywhere.
+    const double angle = next(3600) / 10.0 * kRadPerDegree, off = (next(7) - 3) / 100.0;
+    const Vec2 e = next(5) == 0
+                       ? Vec2{coordinate(), coordinate()}
+                       : Vec2{std::round((c.a + (rad + off) * std::cos(angle)) * 1e4) / 1e4,
+                              std::round((c.o + (rad + off) * std::sin(angle)) * 1e4) / 1e4};
+    r.centre = c;
+    r.end = e;
+    const int want_alarm = alarmOf(r);
+    int got_alarm = 0;
+    double got = 0;
+    try {
+      got = radiusByCentre(r.start, e, c, r.tol_const, r.tol_factor);
+    } catch (const AlarmError& err) {
+      got_alarm = err.number();
+    }
+    EXPECT_EQ(got_alarm, want_alarm) << i;
+    alarms += want_alarm != 0;
+    if (want_alarm == 0) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(solveArc(r).radius))
+          << i;
+    }
+  }
+  EXPECT_GT(alarms, 2000);  // both outcomes compared
+  EXPECT_LT(alarms, 18000);
 }
 
 }  // namespace

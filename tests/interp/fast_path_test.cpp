@@ -221,6 +221,73 @@ TEST(FrontFastPath, CompensatedContourAsTheGeneralPath) {
   EXPECT_EQ(o.segments.size(), 72u);  // the moves of the three passes, as both paths make them
 }
 
+// Circles by their centre (I, J, K: plainWord and plainLineWord collect them since
+// docs/performance.md §53, MotionBuilder::centreArc builds them): the contour's laps with I J,
+// full circles, the G18 and G19 planes, inch, incremental ends, a helix with TURN=, I=AC(..) and
+// I=IC(..), the applicate's parameter, an end off the circle, I twice, CR= with a centre, and a
+// thread's lead K under G33 on a plain line, all three ways and with MotionBuilder::build.
+TEST(FrontFastPath, CirclesByCentreAsTheGeneralPath) {
+  const char* const lines[] = {"G41 G1 X10 Y0",
+                               "G2 X0 Y10 I0 J10",
+                               "G1 X0 Y50",
+                               "G2 X10 Y60 I10 J0",
+                               "G1 X90 Y60",
+                               "G2 X100 Y50 J-10",
+                               "G1 X100 Y10",
+                               "G2 X90 Y0 I-10",
+                               "G1 X10 Y0",
+                               "G40 G1 X-25 Y-20",
+                               "G3 I5 J5",
+                               "G3 X-15 Y-10 I5 J5 F200",
+                               "G18 G2 Z5 X-10 K5 I0",
+                               "G17 G91 G3 X10 Y10 I10 Z-1",
+                               "G90 G19 G2 Y-10 Z4 J-5 K5",
+                               "G17 G70 G2 X0 Y0 J0.19685",
+                               "G71 G3 X20 Y0 I10 J0 TURN=2 Z-3",
+                               "G2 X0 Y0 I=AC(10) J=AC(0)",
+                               "G3 X20 Y0 I=IC(10) J=IC(0)"};
+  ThreeWays three(
+      "$TC_DP1[1,1]=120\n$TC_DP3[1,1]=50\n$TC_DP6[1,1]=4\nG17 G90 G94 G71\nT1 D1\n"
+      "G0 X-20 Y-20 Z0 F500\n");
+  for (const char* line : lines) three.add(line);
+  std::string fast = three.fast, general = three.general;
+  const Outcome o = three.compare();
+  EXPECT_FALSE(o.alarm.has_value());
+  EXPECT_EQ(o.segments.size(), 20u);  // the G0 of the head and one for each line
+  expectSame(fast, general, {}, true);
+  // Each ends the program with its alarm (the same number, line and column both ways).
+  const char* const alarms[] = {"G2 X10 Y0 I3 J0",
+                                "G2 X20 Y0 I10 I10",
+                                "G2 X20 Y0 I10 K0",
+                                "G2 X20 Y0 I10 CR=10",
+                                "G2 X20 Y0 I0 J0",
+                                "G1 X20 I10",
+                                "G33 Z-10 K1.5\nZ-20 K1.5 CR=5",
+                                "G2 X20 Y0.5 I10"};
+  for (const char* end : alarms) {
+    ThreeWays bad("G17 G0 X0 Y0 Z0 F100\n");
+    bad.add(end);
+    EXPECT_TRUE(bad.compare().alarm.has_value()) << end;
+  }
+  // A thread's lead on plain lines (K under the modal G33) runs.
+  ThreeWays thread("G18 G0 X20 Z0\nS1000 M3\nG33 Z-10 K1.5\n");
+  thread.add("Z-20 K1.5");
+  thread.add("X22 Z-30 K1.5");
+  const Outcome t = thread.compare();
+  EXPECT_FALSE(t.alarm.has_value());
+  EXPECT_EQ(t.segments.size(), 4u);
+}
+
+// Random programs of circle words in every plane and order, as the general path: nearly all end
+// in an alarm (an end point off the circle, a parameter twice, the applicate's parameter, a
+// centre without G2/G3), whose number, line and column are compared.
+TEST(FrontFastPath, CircleWordsCollectAsTheGeneralPath) {
+  const std::vector<const char*> words = {"G2",  "G3",  "X",   "Y",   "I",  "J",   "G1",
+                                          "G17", "G18", "G19", "K",   "Z",  "CR=", "G91",
+                                          "G90", "F",   "G41", "G40", "I-", "J-"};
+  compareRandomPrograms(words, 6, 1953, 1, 250);
+}
+
 // The plain line is scanned where it stands when a newline follows it, in a copy otherwise (the
 // last line of a text without its newline): CR LF, a CR left inside the line (CR CR LF) and a
 // last line ending in CR=, all as the general path.

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -196,6 +197,26 @@ Outcome attempt(F build) {
   return o;
 }
 
+// One block built by side a's short way (`plain`: buildPlain, else buildBlock with its choice)
+// and by side b's build(), compared: the same alarm and text, else the same return value, the
+// same motion block (doubles bit for bit) and the same positions. `out`: side a's outcome.
+void buildBoth(Side& a, Side& b, const BlockWords& w, const ModalState& modal,
+               const BlockContext& at, bool plain, Outcome& out) {
+  out = attempt([&] {
+    return plain ? a.builder.buildPlain(w, modal, at) : a.builder.buildBlock(w, modal, at);
+  });
+  const Outcome fb = attempt([&] { return b.builder.build(w, modal, at); });
+  ASSERT_EQ(out.alarm, fb.alarm);
+  EXPECT_EQ(out.text, fb.text);
+  if (out.alarm) return;
+  EXPECT_EQ(out.moved, fb.moved);
+  ASSERT_EQ(a.stage.blocks.size(), b.stage.blocks.size());
+  if (out.moved) expectSameBlock(a.stage.blocks.back(), b.stage.blocks.back());
+  EXPECT_TRUE(same(a.builder.wcs(), b.builder.wcs()));
+  EXPECT_TRUE(same(a.builder.bcs(), b.builder.bcs()));
+  EXPECT_TRUE(same(a.builder.mcs(), b.builder.mcs()));
+}
+
 TEST(MotionFastPath, PlainBlocksBuildAsTheGeneralPath) {
   Random next{2026};
   int blocks = 0, alarms = 0, arcs = 0;
@@ -213,28 +234,18 @@ TEST(MotionFastPath, PlainBlocksBuildAsTheGeneralPath) {
       const bool plain_words =
           w.suppress_frames == 0 && w.axis_mode[0] == lang::AxisMode::Default &&
           w.axis_mode[1] == lang::AxisMode::Default && w.axis_mode[2] == lang::AxisMode::Default;
-      const Outcome fa = attempt([&] {
-        return plain_words && next(2) ? a.builder.buildPlain(w, modal, at)
-                                      : a.builder.buildBlock(w, modal, at);
-      });
-      const Outcome fb = attempt([&] { return b.builder.build(w, modal, at); });
-      ASSERT_EQ(fa.alarm, fb.alarm);
-      EXPECT_EQ(fa.text, fb.text);
-      if (fa.alarm) {
+      Outcome o;
+      buildBoth(a, b, w, modal, at, plain_words && next(2), o);
+      if (testing::Test::HasFatalFailure()) return;
+      if (o.alarm) {
         ++alarms;
         break;  // an alarm ends the run
       }
-      EXPECT_EQ(fa.moved, fb.moved);
-      ASSERT_EQ(a.stage.blocks.size(), b.stage.blocks.size());
-      if (fa.moved) {
-        expectSameBlock(a.stage.blocks.back(), b.stage.blocks.back());
+      if (o.moved) {
         ++blocks;
         arcs += a.stage.blocks.back().motion == Motion::G2 ||
                 a.stage.blocks.back().motion == Motion::G3;
       }
-      EXPECT_TRUE(same(a.builder.wcs(), b.builder.wcs()));
-      EXPECT_TRUE(same(a.builder.bcs(), b.builder.bcs()));
-      EXPECT_TRUE(same(a.builder.mcs(), b.builder.mcs()));
     }
   }
   // Enough of each kind to compare something.
@@ -242,6 +253,80 @@ TEST(MotionFastPath, PlainBlocksBuildAsTheGeneralPath) {
   EXPECT_GT(arcs, 300);
   EXPECT_GT(alarms, 300);
   std::printf("%d blocks, %d arcs, %d alarms\n", blocks, arcs, alarms);
+}
+
+// Circles by their centre (MotionBuilder::centreArc, docs/performance.md §53): I, J, K from the
+// start point in every plane, the end on the circle to 3 decimals, just off it or far off, the
+// full circle (no end point in the plane), a helix, TURN=, the applicate's parameter, =AC(..) and
+// =IC(..) centres, CR= or AR= beside them, under the random settings of change() (inch and
+// diameter programming put most ends off the circle: alarms, compared too).
+TEST(MotionFastPath, CirclesByCentreBuildAsTheGeneralPath) {
+  const double offsets[] = {0, 5, -12.5, 30.125, 7.0625, -0.5};
+  Random next{53};
+  int centre_arcs = 0, alarms = 0;
+  for (int program = 0; program < 600; ++program) {
+    Side a, b;
+    ModalState modal;
+    modal.feed = 100;
+    for (int k = 0; k < 30; ++k) {
+      while (next(4) == 0)
+        if (change(next, modal, a, b)) a.builder.settingsMayChange();
+      if (modal.motion != Motion::G2 && modal.motion != Motion::G3)
+        modal.motion = next(2) ? Motion::G2 : Motion::G3;  // a plain line's word
+      const PlaneAxes pa = planeAxes(modal.plane);
+      const int ax[2] = {pa.abscissa, pa.ordinate};
+      // The words in the program's units: I, J, K in inch under G70 (toMm), an end point also
+      // by its diameter factor (plainTarget).
+      const double unit = modal.units == Units::G70 || modal.units == Units::G700 ? 25.4 : 1.0;
+      const double* factor = modal.incremental ? modal.diam_inc : modal.diam_abs;
+      const Vec3 start = a.builder.wcs();
+      BlockWords w;
+      Vec3 centre = start;
+      for (int i : ax)
+        if (next(10) != 0) {
+          w.centre[i] = true;
+          w.centre_value[i] = offsets[next(20) == 0 ? 0 : 1 + next(5)];
+          centre[i] += w.centre_value[i] * unit;
+        }
+      if (next(150) == 0) w.centre[pa.applicate] = true;
+      if (next(20) == 0)
+        w.centre_mode[ax[next(2)]] = next(4) ? lang::AxisMode::IC : lang::AxisMode::AC;
+      const double radius = std::hypot(centre[ax[0]] - start[ax[0]], centre[ax[1]] - start[ax[1]]);
+      const double angle = next(360) * 3.14159265358979 / 180, off = next(40) == 0 ? 0.05 : 0;
+      // 0: the full circle; 1: the abscissa alone, mirrored about the centre; else both.
+      const unsigned ends = next(6);
+      for (int n = 0; n < 2; ++n) {
+        if (ends == 0 || (ends == 1 && n == 1)) continue;
+        const double on = ends == 1 ? 2 * centre[ax[0]] - start[ax[0]] + off
+                                    : centre[ax[n]] + (radius + off) * (n == 0 ? std::cos(angle)
+                                                                               : std::sin(angle));
+        const double end = std::round(on * 1000) / 1000;
+        w.axis[ax[n]] = true;
+        w.axis_value[ax[n]] =
+            ((modal.incremental ? end - start[ax[n]] : end) / unit) / factor[ax[n]];
+      }
+      if (next(4) == 0) {  // a helix
+        w.axis[pa.applicate] = true;
+        w.axis_value[pa.applicate] = offsets[next(6)];
+      }
+      if (next(20) == 0) w.turn = 2;
+      if (next(60) == 0) w.cr = 10.0;
+      if (next(60) == 0) w.ar = 90.0;
+      const BlockContext at{k + 1, 0, 100, Motion::G1};
+      SCOPED_TRACE(testing::Message() << "program " << program << " block " << k);
+      Outcome o;
+      buildBoth(a, b, w, modal, at, next(2) != 0, o);
+      if (testing::Test::HasFatalFailure()) return;
+      if (o.alarm) {
+        ++alarms;
+        break;  // an alarm ends the run
+      }
+      centre_arcs += o.moved && !w.cr && !w.ar;
+    }
+  }
+  EXPECT_GT(centre_arcs, 4000);
+  EXPECT_GT(alarms, 300);
+  std::printf("%d circles by their centre, %d alarms\n", centre_arcs, alarms);
 }
 
 }  // namespace
