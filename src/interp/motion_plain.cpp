@@ -115,9 +115,12 @@ void MotionBuilder::targetAlarm(double value, int axis) {
 // request takes the programmed end, or the start's where no plane axis is programmed, which is
 // what the target holds there: a full circle), so only the centre, the applicate and the turns
 // change the block. The centre is computed as arc() computes it (the start plus I, J, K in mm,
-// bit for bit) and checked by geom::radiusByCentre, solveArc's twin.
-[[gnu::noinline]] void MotionBuilder::centreArc(const BlockWords& w, const ModalState& modal,
-                                                const Vec3& target) {
+// bit for bit) and checked by geom::radiusByCentre, solveArc's twin. Inline: out of line it
+// saved the circle by radius 3 instructions a block, but the contour's run took 6 % longer
+// (docs/performance.md §53).
+[[gnu::always_inline]] inline void MotionBuilder::centreArc(const BlockWords& w,
+                                                            const ModalState& modal,
+                                                            const Vec3& target) {
   const double tol_const = data_.get(md_circle_const_), tol_factor = data_.get(md_circle_factor_);
   const Vec3& f = wcs_;
   auto offset = [&](int ax) { return w.centre[ax] ? toMm(modal, w.centre_value[ax]) : 0; };
