@@ -94,7 +94,7 @@ void Interpreter::executeBlock() {
   motion_.settingsMayChange();  // any line but a plain one may change them (motion_plain.cpp;
                                 // a plain line's G40/G41/G42 resets them in plainG)
   if (b.stmts.empty() && b.decls.empty()) return;       // empty, comment or label-only line
-  words_plain_ ? words_.clearPlain() : words_.clear();  // clearPlain: seven stores, not 300 bytes
+  words_plain_ ? words_.clearPlain() : words_.clear();  // clearPlain: ten stores, not 300 bytes
   words_plain_ = false;  // until this block is through without an alarm
   ProgramLevel& lvl = flow_.level();
   if (b.plain) [[likely]] {

@@ -2,8 +2,6 @@
 // from one block before it is executed.
 #pragma once
 
-#include <cstddef>
-#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -106,7 +104,7 @@ struct BlockWords {
   // K): only those fields differ from an empty instance, so resetting them is the same as
   // clear() (plainWord's axis_mode and centre_mode are the empty instance's).
   void clearPlain() {
-    // Field by field (the compiler joins them into eight stores); one memset of the 64 bytes
+    // Field by field (the compiler joins these into seven stores); one memset of the 64 bytes
     // cost the usual line 0.8 instructions more (docs/performance.md §53).
     axis[0] = axis[1] = axis[2] = false;
     plain_circle = false;

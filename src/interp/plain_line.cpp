@@ -230,7 +230,7 @@ NCOFFSET_INLINE_STEP const char* Interpreter::plainWords(const char* base, AtEnd
     if (at_end(p)) return nullptr;  // an empty line or a block number alone
   }
   plain_column_ = static_cast<int>(p - base) + 1;
-  // Only plainWord's fields now (seven stores): executeBlock clears the rest if the line is not
+  // Only plainWord's fields now (ten stores): executeBlock clears the rest if the line is not
   // plain after all, takePlainLine if it is.
   words_.clearPlain();
   motion = modal_.motion;
