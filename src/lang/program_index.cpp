@@ -65,6 +65,19 @@ bool mayHoldHead(std::string_view s) {
   return true;
 }
 
+// mayHoldHead's answer for a line that starts with a block number (N10 G1 X10): false when a
+// letter and a digit follow the number and its blanks, which the vector scan of
+// program_index_scan.inc checks for the lines it cannot pass over (a block number's length
+// varies). Reads no further than `end` and stops at the line's end, which is no digit, blank
+// or letter: a line it passes over is one mayHoldHead passes over.
+[[gnu::always_inline]] inline bool numberedUsualLine(const char* p, const char* end) {
+  if (end - p < 2 || p[0] != 'N' || !isDigitChar(p[1])) return false;
+  p += 2;
+  while (p < end && isDigitChar(*p)) ++p;
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  return end - p >= 2 && isLetter(p[0]) && isDigitChar(p[1]);
+}
+
 #if defined(__SSE2__)
 // The vector operations of the usual-line scan, for 16 characters (SSE2) and, where the processor
 // has it, 32 (AVX2): the scan below is written once for both.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -262,7 +263,9 @@ TEST(ProgramIndex, OverlongLinesAreLeftForExecution) {
 // 45); the labels and structures between them must get the offsets and line numbers that
 // reading line by line gives, whatever the lengths, the line ends (LF, CR LF) and where the
 // groups fall. Both widths, where the processor has AVX2.
-void labelsAmongUsualLines();
+// `numbered`: block numbers before the usual lines and some labels (N10 G1 X5, N10G1, N10 LBL3:,
+// N10 alone, N10 IF ...), which the scan passes over by a look at their head (§53).
+void labelsAmongUsualLines(bool numbered = false);
 TEST(ProgramIndex, LabelsAmongUsualLinesOfEveryLength) {
   labelsAmongUsualLines();
 }
@@ -271,8 +274,20 @@ TEST(ProgramIndex, LabelsAmongUsualLinesSixteenAtATime) {
   labelsAmongUsualLines();
   ProgramIndex::wide_scan = true;
 }
+TEST(ProgramIndex, LabelsAmongNumberedUsualLines) {
+  labelsAmongUsualLines(true);
+  ProgramIndex::wide_scan = false;
+  labelsAmongUsualLines(true);
+  ProgramIndex::wide_scan = true;
+}
 
-void labelsAmongUsualLines() {
+// A block number for a numbered program's line: N, 1 to 6 digits, no blank, a blank or a tab.
+std::string blockNumber(const std::function<unsigned(unsigned)>& next) {
+  const char* const gaps[] = {"", " ", " ", "\t", "  "};
+  return "N" + std::to_string(1 + next(999999) / (next(2) ? 1 : 1000)) + gaps[next(5)];
+}
+
+void labelsAmongUsualLines(bool numbered) {
   unsigned seed = 2026;
   auto next = [&](unsigned n) {
     seed = seed * 1103515245u + 12345u;
@@ -285,6 +300,7 @@ void labelsAmongUsualLines() {
     const unsigned lines = 1 + next(program < 200 ? 120 : 600);
     for (unsigned k = 0; k < lines; ++k, ++line) {
       const unsigned kind = next(10);
+      if (numbered && next(2)) text += blockNumber(next);
       if (kind == 0) {
         labels.emplace_back("LBL" + std::to_string(k), line);
         text += labels.back().first + ":";
@@ -295,7 +311,10 @@ void labelsAmongUsualLines() {
         text += "ENDWHILE";
         --open;
       } else if (kind == 3) {
-        text += next(2) ? "N10 G1" : "X";  // not usual: a block number, a letter alone
+        text += next(2) ? "N10 G1" : "X";  // a block number, a letter alone
+      } else if (numbered && kind == 4) {
+        const char* const others[] = {"GOTOF LBL0", "R1=2", "; N10 G1", "", "G", "_N_A", "M30"};
+        text += others[next(7)];  // after a block number: no usual line
       } else {
         text += static_cast<char>('A' + next(13));  // A..M
         text += std::string(1 + next(40), static_cast<char>('0' + next(10)));
