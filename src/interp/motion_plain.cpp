@@ -75,38 +75,50 @@ void MotionBuilder::targetAlarm(double value, int axis) {
   return moves((to + applied_offset_) - (bcs_ + before));
 }
 
+namespace {
+
+// The centre of buildPlain's circle into the block, with the applicate: `solve(sa, so, ea, eo,
+// a, o)` gives it in the active plane from the start `f` (sa, so) to the end `t` (ea, eo),
+// abscissa first (a, o: the plane's axes); the applicate's coordinate is the start's. Each plane
+// written out with its axes by name: the points and the centre stay in registers (through
+// arrays on the stack and a returned ArcSolution, loads wider than the stores before them waited
+// for those, behind the square roots: docs/performance.md §47).
+template <class Solve>
+[[gnu::always_inline]] inline void centreInPlane(core::MotionBlock& m, Plane plane, const Vec3& f,
+                                                 const Vec3& t, Solve&& solve) {
+  if (plane == Plane::G18) {  // Z X
+    const geom::Vec2 k = solve(f.z, f.x, t.z, t.x, 2, 0);
+    m.centre = {k.o, f.y, k.a};
+    m.applicate = 1;
+  } else if (plane == Plane::G19) {  // Y Z
+    const geom::Vec2 k = solve(f.y, f.z, t.y, t.z, 1, 2);
+    m.centre = {f.x, k.a, k.o};
+    m.applicate = 0;
+  } else {  // G17: X Y
+    const geom::Vec2 k = solve(f.x, f.y, t.x, t.y, 0, 1);
+    m.centre = {k.a, k.o, f.z};
+    m.applicate = 2;
+  }
+}
+
+}  // namespace
+
 // arc() for a circle by CR= alone. arcByRadius's end point is the programmed one (`end` itself),
 // so the target and the block's end stay as buildPlain wrote them, and of arcEnd's stores only
-// the centre's, the applicate's and the turns' change the block. Inline, with the plane's axes
-// by name: buildPlain's target and the centre stay in registers (through arrays on the stack
-// and a returned ArcSolution, loads wider than the stores before them waited for those, behind
-// the square roots: docs/performance.md §47).
+// the centre's, the applicate's and the turns' change the block. Inline (centreInPlane).
 [[gnu::always_inline]] inline void MotionBuilder::radiusArc(const BlockWords& w,
                                                             const ModalState& modal,
                                                             const Vec3& target) {
   const double cr = toMm(modal, *w.cr);
   const bool ccw = m_.motion == Motion::G3;
   const double tol_const = data_.get(md_circle_const_), tol_factor = data_.get(md_circle_factor_);
-  const Vec3& f = wcs_;
-  // The centre in the plane from the start (sa, so) to the end (ea, eo), abscissa first; inline
-  // in each of the three places (one call after choosing the points cost 5 instructions more).
-  auto centre = [&](double sa, double so, double ea, double eo) __attribute__((always_inline)) {
-    return geom::centreByRadius({sa, so}, {ea, eo}, cr, ccw, tol_const, tol_factor);
-  };
-  Vec3& c = m_.centre;
-  if (modal.plane == Plane::G18) {  // Z X
-    const geom::Vec2 k = centre(f.z, f.x, target.z, target.x);
-    c = {k.o, f.y, k.a};
-    m_.applicate = 1;
-  } else if (modal.plane == Plane::G19) {  // Y Z
-    const geom::Vec2 k = centre(f.y, f.z, target.y, target.z);
-    c = {f.x, k.a, k.o};
-    m_.applicate = 0;
-  } else {  // G17: X Y
-    const geom::Vec2 k = centre(f.x, f.y, target.x, target.y);
-    c = {k.a, k.o, f.z};
-    m_.applicate = 2;
-  }
+  // Inline in each of the three planes (one call after choosing the points cost 5 instructions
+  // more).
+  centreInPlane(
+      m_, modal.plane, wcs_, target,
+      [&](double sa, double so, double ea, double eo, int, int) __attribute__((always_inline)) {
+        return geom::centreByRadius({sa, so}, {ea, eo}, cr, ccw, tol_const, tol_factor);
+      });
   m_.turns = w.turn.value_or(0);
 }
 
@@ -122,28 +134,14 @@ void MotionBuilder::targetAlarm(double value, int axis) {
                                                             const ModalState& modal,
                                                             const Vec3& target) {
   const double tol_const = data_.get(md_circle_const_), tol_factor = data_.get(md_circle_factor_);
-  const Vec3& f = wcs_;
   auto offset = [&](int ax) { return w.centre[ax] ? toMm(modal, w.centre_value[ax]) : 0; };
-  auto centre = [&](double sa, double so, double ea, double eo, int a, int o)
-      __attribute__((always_inline)) {
-    const geom::Vec2 c{sa + offset(a), so + offset(o)};
-    geom::radiusByCentre({sa, so}, {ea, eo}, c, tol_const, tol_factor);
-    return c;
-  };
-  Vec3& c = m_.centre;
-  if (modal.plane == Plane::G18) {  // Z X
-    const geom::Vec2 k = centre(f.z, f.x, target.z, target.x, 2, 0);
-    c = {k.o, f.y, k.a};
-    m_.applicate = 1;
-  } else if (modal.plane == Plane::G19) {  // Y Z
-    const geom::Vec2 k = centre(f.y, f.z, target.y, target.z, 1, 2);
-    c = {f.x, k.a, k.o};
-    m_.applicate = 0;
-  } else {  // G17: X Y
-    const geom::Vec2 k = centre(f.x, f.y, target.x, target.y, 0, 1);
-    c = {k.a, k.o, f.z};
-    m_.applicate = 2;
-  }
+  centreInPlane(
+      m_, modal.plane, wcs_, target,
+      [&](double sa, double so, double ea, double eo, int a, int o) __attribute__((always_inline)) {
+        const geom::Vec2 c{sa + offset(a), so + offset(o)};
+        geom::radiusByCentre({sa, so}, {ea, eo}, c, tol_const, tol_factor);
+        return c;
+      });
   m_.turns = w.turn.value_or(0);
 }
 
