@@ -266,6 +266,18 @@ TEST(SolveArc, MaxOfIsFmax) {
     }
 }
 
+// The random tests' numbers (a 64-bit linear congruential generator: the same sequences on every
+// run): next(n) in 0 .. n-1, and coordinates, 0 one time in four, else -100..100 mm to three
+// decimals.
+struct Random64 {
+  std::uint64_t state;
+  int operator()(int n) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
+  }
+  double coordinate() { return (*this)(4) == 0 ? 0.0 : ((*this)(200001) - 100000) / 1000.0; }
+};
+
 // centreByRadius against the centre as arcByRadius computed it before (docs/performance.md §47:
 // the chord's midpoint plus (side * h) times its unit normal; now h times (side * normal)), bit
 // for bit, on random chords and radii of both signs and both directions, down to a half circle
@@ -282,14 +294,9 @@ TEST(SolveArc, CentreByRadiusAsBefore) {
     const double side = (ccw == (cr > 0)) ? 1 : -1;
     return Vec2{mid.a + side * h * left.a, mid.o + side * h * left.o};
   };
-  std::uint64_t state = 47;
-  auto next = [&state](int n) {  // 0 .. n-1
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
-  };
-  auto coordinate = [&next] { return next(4) == 0 ? 0.0 : (next(200001) - 100000) / 1000.0; };
+  Random64 next{47};
   for (int i = 0; i < 20000; ++i) {
-    const Vec2 s{coordinate(), coordinate()}, e{coordinate(), coordinate()};
+    const Vec2 s{next.coordinate(), next.coordinate()}, e{next.coordinate(), next.coordinate()};
     const double d = std::sqrt((e.a - s.a) * (e.a - s.a) + (e.o - s.o) * (e.o - s.o));
     if (d < 1e-6) continue;
     const double rad = next(3) == 0 ? d / 2 : d / 2 + next(100000) / 997.0;  // a half circle too
@@ -305,22 +312,17 @@ TEST(SolveArc, CentreByRadiusAsBefore) {
 // an end point: the same radius bit for bit, and the same alarm (14045 start point on the centre,
 // 14040 end point off the circle beyond MD21000/MD21010) where solveArc raises one.
 TEST(SolveArc, RadiusByCentreAsSolveArc) {
-  std::uint64_t state = 2212;
-  auto next = [&state](int n) {  // 0 .. n-1
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
-  };
-  auto coordinate = [&next] { return next(4) == 0 ? 0.0 : (next(200001) - 100000) / 1000.0; };
+  Random64 next{2212};
   int alarms = 0;
   for (int i = 0; i < 20000; ++i) {
-    ArcRequest r = request({coordinate(), coordinate()}, next(2) != 0);
-    const Vec2 c = next(8) == 0 ? r.start : Vec2{coordinate(), coordinate()};
+    ArcRequest r = request({next.coordinate(), next.coordinate()}, next(2) != 0);
+    const Vec2 c = next(8) == 0 ? r.start : Vec2{next.coordinate(), next.coordinate()};
     const double rad =
         std::sqrt((c.a - r.start.a) * (c.a - r.start.a) + (c.o - r.start.o) * (c.o - r.start.o));
     // An end on the circle to 4 decimals, off it by up to 0.03 mm, or anywhere.
     const double angle = next(3600) / 10.0 * kRadPerDegree, off = (next(7) - 3) / 100.0;
     const Vec2 e = next(5) == 0
-                       ? Vec2{coordinate(), coordinate()}
+                       ? Vec2{next.coordinate(), next.coordinate()}
                        : Vec2{std::round((c.a + (rad + off) * std::cos(angle)) * 1e4) / 1e4,
                               std::round((c.o + (rad + off) * std::sin(angle)) * 1e4) / 1e4};
     r.centre = c;
